@@ -1,0 +1,40 @@
+#pragma once
+// Loading CAD solids and everything that needs OpenCASCADE: the only module that includes it.
+// A BrepModel holds exactly one valid solid; loaders refuse anything else with a framefix::Error.
+#include <memory>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "framefix/mesh/features.h"
+#include "framefix/mesh/surface_mesh.h"
+
+namespace framefix {
+
+struct BrepModel {
+    struct Shape;                        // wraps the TopoDS_Shape; defined in brep/ only
+    std::shared_ptr<const Shape> shape;  // immutable: corrections build new models
+    std::string path;                    // source file, empty for BREP strings
+    std::string kind;                    // "step" | "brep" | "iges"
+    int num_faces = 0, num_edges = 0, num_vertices = 0;  // TopExp::MapShapes counts
+    Eigen::Vector3d bbox_min = Eigen::Vector3d::Zero(), bbox_max = Eigen::Vector3d::Zero();
+    double volume = 0;                   // model units^3
+};
+
+BrepModel load_shape(const std::string& path);               // .step/.stp/.brep/.iges/.igs
+BrepModel load_brep_string(const std::string& brep_text);    // FreeCAD's exportBrepToString()
+std::string to_brep_string(const BrepModel& model);
+
+struct FeatureOptions {
+    int samples_per_edge = 9;       // points along each edge where the dihedral angle is measured
+    double tangent_angle_deg = 30;  // |theta - 180| below this: not a feature (tangent-continuous)
+};
+FeatureSet classify_features(const BrepModel& model, const FeatureOptions& options = {});
+
+// Size h for about `target_tets` near-uniform tets in this solid.
+double default_size(const BrepModel& model, int target_tets = 50000);
+
+// OCCT surface triangulation with boundary edges near h, faces and feature segments tagged.
+SurfaceMesh tessellate(const BrepModel& model, const FeatureSet& features, const MeshOptions& options);
+
+}  // namespace framefix

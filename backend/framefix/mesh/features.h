@@ -1,0 +1,40 @@
+#pragma once
+// Feature curves: B-rep edges (or, for imported tet meshes, boundary creases) whose dihedral
+// angle theta, measured inside the solid, makes them sharp. Hex valence k = round(theta / 90 deg):
+// 1 convex, 2 imprinted curve on a smooth surface, 3 concave, 4 slit. 0 means "not a feature".
+#include <array>
+#include <string>
+#include <vector>
+
+namespace framefix {
+
+struct EdgeFeature {
+    int edge = 0;              // B-rep edge index, 1-based (FreeCAD's Edge<i>)
+    int valence = 0;           // 0 not a feature, else 1..4
+    double angle_min_deg = 0;  // dihedral angle inside the solid, min over samples along the edge
+    double angle_max_deg = 0;  // ... max over samples
+    double length = 0;         // model units
+    bool valence_varies = false;  // samples fall in more than one valence class
+    std::string reason;           // for non-features: "seam", "degenerate", "tangent"
+};
+
+struct FeatureSet {
+    std::vector<EdgeFeature> edges;  // one entry per B-rep edge, edges[i].edge == i + 1
+
+    int valence_of(int edge) const {  // 0 for unknown edges
+        return edge >= 1 && edge <= int(edges.size()) ? edges[edge - 1].valence : 0;
+    }
+    int curves() const {
+        int n = 0;
+        for (const auto& e : edges) n += e.valence > 0;
+        return n;
+    }
+    std::array<int, 5> by_valence() const {  // index k = number of features of valence k
+        std::array<int, 5> n{};
+        for (const auto& e : edges) n[e.valence] += 1;
+        n[0] = 0;
+        return n;
+    }
+};
+
+}  // namespace framefix

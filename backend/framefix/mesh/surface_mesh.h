@@ -1,0 +1,25 @@
+#pragma once
+// The boundary of a solid as a triangulated PLC: what OCCT's tessellation hands to TetGen.
+#include <Eigen/Core>
+
+#include "framefix/mesh/types.h"
+
+namespace framefix {
+
+struct SurfaceMesh {
+    Points points;                  // #P x 3, model units; B-rep vertices come first
+    Triangles triangles;            // #F x 3 point indices, oriented outward
+    Eigen::VectorXi face_tags;      // #F, B-rep face index (1-based) of each triangle
+    Segments feature_segments;      // #S x 2 point indices, polyline pieces of feature curves
+    Eigen::VectorXi segment_tags;   // #S, B-rep edge index (1-based) of each segment
+    Eigen::VectorXi corner_points;  // #C point index of B-rep vertex i+1
+};
+
+// Options of the meshing stage (tessellate + tetrahedralize).
+struct MeshOptions {
+    double size = 0;            // target edge length h in model units; 0 = about target_tets tets
+    int target_tets = 50000;    // used only when size == 0
+    double max_memory_mb = 0;   // refuse sizes whose estimate exceeds this; 0 = 80% of available RAM
+};
+
+}  // namespace framefix

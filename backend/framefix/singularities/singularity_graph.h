@@ -1,0 +1,71 @@
+#pragma once
+// Singularity graph of a frame field (ALGORITHMS.md §4-§5 and section 0). Definitions:
+// - holonomy of a triangle: the cube rotation g_H picked up by carrying the frame around its
+//   three edges (sub-sampled so consecutive frames are < 45 deg apart);
+// - a singular triangle has a 90 deg holonomy; its valence is 3 (index +1/4) when the holonomy
+//   axis w points along the loop normal n (w.n > 0) and 5 (index -1/4) otherwise; 120/180 deg
+//   holonomies are "complex" and belong to nodes;
+// - a singular curve is a chain of singular triangles linked through tets with two singular faces;
+// - a 3-5 curve is an open curve whose (majority-smoothed) valence differs at its two ends: no hex
+//   mesh realises it.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framefix/frame_field/frame_field.h"
+#include "framefix/mesh/tet_mesh.h"
+#include "framefix/mesh/tet_topology.h"
+
+namespace framefix {
+
+enum class CurveKind : int { Valence3 = 0, Valence5 = 1, ThreeFive = 2, Other = 3 };
+const char* to_string(CurveKind kind);  // "valence3" | "valence5" | "3-5" | "other"
+
+struct SingularCurve {
+    int id = 0;
+    CurveKind kind = CurveKind::Valence3;
+    std::vector<int> faces;              // singular triangles in chain order (topology face ids)
+    std::vector<int> valences;           // per face: 3, 5 (raw label)
+    Points points;                       // smoothed polyline for display, model units
+    Eigen::Vector3d stable_direction = Eigen::Vector3d::Zero();  // mean holonomy axis
+    int ends[2] = {-1, -1};              // node ids; -1 for a closed loop
+    bool closed = false;
+    double length = 0;
+    int transition = -1;                 // 3-5 curves: index in `points` where the valence changes
+};
+
+struct SingularNode {
+    int id = 0;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    bool boundary = false;               // curve end on the boundary
+    int n3 = 0, n5 = 0;                  // valence-3 / valence-5 curves meeting here
+    int n_complex = 0;                   // complex triangles absorbed
+    bool valid = true;                   // interior: table of hex-meshable nodes; boundary: rule
+    std::vector<int> tets;               // junction tets clustered into this node
+};
+
+struct SingularitySummary {
+    int curves = 0, valence3 = 0, valence5 = 0, curves_3_5 = 0, nodes = 0, invalid_nodes = 0;
+    bool meshable = true;                // curves_3_5 == 0 && invalid_nodes == 0
+};
+
+struct SingularityGraph {
+    std::vector<int> face_valence;       // #faces of the topology: 0 regular, 3, 5, or -1 complex
+    Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> face_axis;  // #faces x 3 holonomy axis w
+    std::vector<SingularCurve> curves;
+    std::vector<SingularNode> nodes;
+    SingularitySummary summary;
+    double seconds = 0;
+};
+
+struct SingularityOptions {
+    int smoothing_passes = 5;            // Laplacian passes on the display polylines
+    int majority_window = 5;             // label smoothing window along a chain
+    int threads = 0;                     // 0 = all
+};
+
+SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
+                                       const SingularityOptions& options = {});
+
+}  // namespace framefix
