@@ -1,0 +1,135 @@
+#include "framefix/pipeline/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "framefix/core/error.h"
+
+namespace framefix {
+namespace {
+
+using json = nlohmann::json;
+
+json point(const Eigen::Vector3d& p) { return json::array({p.x(), p.y(), p.z()}); }
+
+json summary_json(const SingularitySummary& s) {
+    return {{"curves", s.curves},         {"valence3", s.valence3}, {"valence5", s.valence5},
+            {"curves_3_5", s.curves_3_5}, {"nodes", s.nodes},       {"invalid_nodes", s.invalid_nodes},
+            {"meshable", s.meshable}};
+}
+
+// Majority valence of the first (end 0) or last (end 1) min(3, n/3) triangles of a curve.
+int end_valence(const SingularCurve& c, int end) {
+    const int n = int(c.valences.size());
+    if (n == 0) return 0;
+    const int k = std::max(1, std::min(3, n / 3));
+    int n3 = 0, n5 = 0;
+    for (int i = 0; i < k; ++i) {
+        const int v = c.valences[end == 0 ? i : n - 1 - i];
+        n3 += v == 3;
+        n5 += v == 5;
+    }
+    return n3 >= n5 ? 3 : 5;
+}
+
+json singularities_json(const SingularityGraph& g) {
+    json curves = json::array(), nodes = json::array();
+    for (const auto& c : g.curves) {
+        json pts = json::array();
+        for (int i = 0; i < c.points.rows(); ++i) pts.push_back(point(c.points.row(i).transpose()));
+        curves.push_back({{"id", c.id},
+                          {"kind", to_string(c.kind)},
+                          {"length", c.length},
+                          {"ends", json::array({c.ends[0], c.ends[1]})},
+                          {"closed", c.closed},
+                          {"end_valences", json::array({end_valence(c, 0), end_valence(c, 1)})},
+                          {"triangles", c.faces.size()},
+                          {"transition", c.transition},
+                          {"stable_direction", point(c.stable_direction)},
+                          {"points", pts}});
+    }
+    for (const auto& n : g.nodes)
+        nodes.push_back({{"id", n.id},
+                         {"position", point(n.position)},
+                         {"boundary", n.boundary},
+                         {"n3", n.n3},
+                         {"n5", n.n5},
+                         {"valid", n.valid}});
+    return {{"curves", curves}, {"nodes", nodes}, {"summary", summary_json(g.summary)}};
+}
+
+json features_json(const AnalysisResult& r) {
+    const auto by = r.features.by_valence();
+    json curves = json::array();
+    for (const auto& pl : feature_polylines(r.mesh)) {
+        json pts = json::array();
+        for (int v : pl.vertices) pts.push_back(point(r.mesh.points.row(v).transpose()));
+        curves.push_back({{"edge", pl.edge}, {"valence", r.features.valence_of(pl.edge)}, {"points", pts}});
+    }
+    json varying = json::array();
+    for (const auto& e : r.features.edges)
+        if (e.valence_varies)
+            varying.push_back({{"edge", e.edge}, {"angle_min_deg", e.angle_min_deg}, {"angle_max_deg", e.angle_max_deg}});
+    return {{"features",
+             {{"curves", r.features.curves()},
+              {"by_valence", {{"1", by[1]}, {"2", by[2]}, {"3", by[3]}, {"4", by[4]}}},
+              {"valence_varies", varying}}},
+            {"feature_curves", curves}};
+}
+
+}  // namespace
+
+std::string report_json(const AnalysisResult& r) {
+    json j;
+    j["version"] = 1;
+    j["input"] = {{"path", r.input_path}, {"kind", r.input_kind}};
+    j["mesh"] = {{"vertices", r.mesh.num_vertices()}, {"tets", r.mesh.num_tets()}, {"size", r.mesh.size}};
+    for (auto& [k, v] : features_json(r).items()) j[k] = v;
+    if (r.has_field)
+        j["field"] = {{"energy", r.field.energy},
+                      {"initial_energy", r.field.initial_energy},
+                      {"iterations", r.field.iterations},
+                      {"solver", r.field.solver}};
+    if (r.has_singularities) j["singularities"] = singularities_json(r.singularities);
+    json t = {{"load", r.timings.load}, {"mesh", r.timings.mesh}, {"total", r.timings.total}};
+    if (r.has_field) t["field"] = r.timings.field;
+    if (r.has_singularities) t["singularities"] = r.timings.singularities;
+    j["timings_s"] = t;
+    j["peak_memory_mb"] = r.peak_memory_mb;
+    return j.dump(1);
+}
+
+std::string human_summary(const AnalysisResult& r) {
+    const std::string name = std::filesystem::path(r.input_path.empty() ? "shape" : r.input_path).filename();
+    char tets[32];
+    const int nt = r.mesh.num_tets();
+    if (nt >= 10000) std::snprintf(tets, sizeof tets, "%dk tets", int(std::lround(nt / 1000.0)));
+    else std::snprintf(tets, sizeof tets, "%d tets", nt);
+    std::string s = name + ": " + tets;
+    if (r.has_singularities) {
+        const auto& m = r.singularities.summary;
+        s += ", " + std::to_string(m.curves) + " singular curve" + (m.curves == 1 ? "" : "s");
+        if (m.curves > 0) {
+            s += ": ";
+            std::vector<std::string> parts;
+            if (m.curves_3_5) parts.push_back(std::to_string(m.curves_3_5) + " 3-5");
+            if (m.valence3) parts.push_back(std::to_string(m.valence3) + " valence-3");
+            if (m.valence5) parts.push_back(std::to_string(m.valence5) + " valence-5");
+            for (size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];
+        }
+        if (m.invalid_nodes) s += ", " + std::to_string(m.invalid_nodes) + " invalid node" + (m.invalid_nodes == 1 ? "" : "s");
+        s += m.meshable ? " (hex-meshable)" : " (not hex-meshable)";
+    } else {
+        s += ", " + std::to_string(r.features.curves()) + " feature curves";
+    }
+    char t[32];
+    std::snprintf(t, sizeof t, "; %.1f s", r.timings.total);
+    return s + t;
+}
+
+}  // namespace framefix

@@ -1,0 +1,26 @@
+#pragma once
+// report.json (version 1, DESIGN.md) and the files ParaView opens, from an AnalysisResult.
+#include <string>
+#include <vector>
+
+#include "framefix/pipeline/pipeline.h"
+
+namespace framefix {
+
+// The report as JSON text. Sections a result does not have (no field yet, ...) are absent.
+std::string report_json(const AnalysisResult& result);
+
+// Writes DIR/report.json and the VTK files; returns the paths written. Creates DIR.
+std::vector<std::string> write_outputs(const AnalysisResult& result, const std::string& dir);
+
+// Feature curves as ordered polylines of mesh vertices, one per B-rep edge tag.
+struct FeaturePolyline {
+    int edge = 0;                 // B-rep edge index (1-based)
+    std::vector<int> vertices;    // mesh vertex indices in order along the curve
+};
+std::vector<FeaturePolyline> feature_polylines(const TetMesh& mesh);
+
+// "notch.step: 58k tets, 1 singular curve: 1 3-5 curve (not hex-meshable); 0.6 s"
+std::string human_summary(const AnalysisResult& result);
+
+}  // namespace framefix

@@ -1,0 +1,99 @@
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "framefix/frame_field/frame_field.h"
+#include "framefix/singularities/singularity_graph.h"
+
+namespace py = pybind11;
+
+namespace framefix::python {
+namespace {
+
+FeatureSet feature_set(const std::vector<EdgeFeature>& edges) {
+    FeatureSet f;
+    f.edges = edges;
+    return f;
+}
+
+py::dict summary_dict(const SingularitySummary& s) {
+    py::dict d;
+    d["curves"] = s.curves;
+    d["valence3"] = s.valence3;
+    d["valence5"] = s.valence5;
+    d["curves_3_5"] = s.curves_3_5;
+    d["nodes"] = s.nodes;
+    d["invalid_nodes"] = s.invalid_nodes;
+    d["meshable"] = s.meshable;
+    return d;
+}
+
+}  // namespace
+
+void bind_field(py::module_& m) {
+    py::class_<FrameField>(m, "FrameField", "One frame per mesh vertex")
+        .def_readonly("coefficients", &FrameField::coefficients, "#V x 9 SH band-4 coefficients")
+        .def_readonly("axes", &FrameField::axes, "#V x 9: axes a1, a2, a3 per vertex")
+        .def_readonly("distance", &FrameField::distance, "#V distance to the frame manifold")
+        .def_property_readonly("constraint_kind",
+                               [](const FrameField& f) {
+                                   Eigen::VectorXi k(int(f.kind.size()));
+                                   for (size_t i = 0; i < f.kind.size(); ++i) k(int(i)) = int(f.kind[i]);
+                                   return k;
+                               },
+                               "#V: 0 free, 1 normal-aligned, 2 fixed")
+        .def_readonly("energy", &FrameField::energy)
+        .def_readonly("initial_energy", &FrameField::initial_energy)
+        .def_readonly("energy_history", &FrameField::energy_history)
+        .def_readonly("iterations", &FrameField::iterations)
+        .def_readonly("solver", &FrameField::solver);
+
+    m.def(
+        "solve_frame_field",
+        [](const TetMesh& mesh, const std::vector<EdgeFeature>& features, int max_iterations, int threads) {
+            const TetTopology topo = build_topology(mesh);
+            const Constraints c = boundary_constraints(mesh, topo, feature_set(features));
+            FieldOptions o;
+            o.max_iterations = max_iterations;
+            o.threads = threads;
+            return solve_frame_field(mesh, topo, c, o);
+        },
+        py::arg("mesh"), py::arg("features"), py::arg("max_iterations") = 60, py::arg("threads") = 0,
+        py::call_guard<py::gil_scoped_release>(), "Boundary-aligned smooth frame field (linear init + MBO)");
+
+    py::class_<SingularCurve>(m, "SingularCurve")
+        .def_readonly("id", &SingularCurve::id)
+        .def_property_readonly("kind", [](const SingularCurve& c) { return std::string(to_string(c.kind)); })
+        .def_readonly("points", &SingularCurve::points, "polyline, #P x 3")
+        .def_readonly("faces", &SingularCurve::faces)
+        .def_readonly("valences", &SingularCurve::valences)
+        .def_readonly("length", &SingularCurve::length)
+        .def_readonly("closed", &SingularCurve::closed)
+        .def_readonly("stable_direction", &SingularCurve::stable_direction)
+        .def_property_readonly("ends", [](const SingularCurve& c) { return std::make_pair(c.ends[0], c.ends[1]); })
+        .def("__repr__", [](const SingularCurve& c) {
+            return "<SingularCurve " + std::to_string(c.id) + " " + to_string(c.kind) + ">";
+        });
+    py::class_<SingularNode>(m, "SingularNode")
+        .def_readonly("id", &SingularNode::id)
+        .def_readonly("position", &SingularNode::position)
+        .def_readonly("boundary", &SingularNode::boundary)
+        .def_readonly("n3", &SingularNode::n3)
+        .def_readonly("n5", &SingularNode::n5)
+        .def_readonly("valid", &SingularNode::valid);
+    py::class_<SingularityGraph>(m, "SingularityGraph")
+        .def_readonly("curves", &SingularityGraph::curves)
+        .def_readonly("nodes", &SingularityGraph::nodes)
+        .def_readonly("face_valence", &SingularityGraph::face_valence)
+        .def_property_readonly("summary", [](const SingularityGraph& g) { return summary_dict(g.summary); });
+
+    m.def(
+        "extract_singularities",
+        [](const TetMesh& mesh, const FrameField& field) {
+            return extract_singularities(mesh, build_topology(mesh), field);
+        },
+        py::arg("mesh"), py::arg("field"), py::call_guard<py::gil_scoped_release>(),
+        "Singular curves, nodes and 3-5 curves of a frame field");
+}
+
+}  // namespace framefix::python

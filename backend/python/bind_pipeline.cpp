@@ -1,0 +1,66 @@
+#include <pybind11/eigen.h>
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "framefix/pipeline/pipeline.h"
+#include "framefix/pipeline/report.h"
+
+namespace py = pybind11;
+
+namespace framefix::python {
+namespace {
+
+AnalysisOptions make_options(double size, double size_factor, int threads) {
+    AnalysisOptions o;
+    o.mesh.size = size;
+    o.size_factor = size_factor;
+    o.threads = threads;
+    return o;
+}
+
+}  // namespace
+
+void bind_pipeline(py::module_& m) {
+    py::class_<AnalysisResult>(m, "Analysis", "Every intermediate of a run, plus its report")
+        .def_readonly("input_path", &AnalysisResult::input_path)
+        .def_readonly("input_kind", &AnalysisResult::input_kind)
+        .def_readonly("mesh", &AnalysisResult::mesh)
+        .def_property_readonly("features", [](const AnalysisResult& r) { return r.features.edges; })
+        .def_property_readonly("field", [](const AnalysisResult& r) -> py::object {
+            return r.has_field ? py::cast(r.field) : py::none();
+        })
+        .def_property_readonly("singularities", [](const AnalysisResult& r) -> py::object {
+            return r.has_singularities ? py::cast(r.singularities) : py::none();
+        })
+        .def_property_readonly("report_json", &report_json)
+        .def("write_outputs", &write_outputs, py::arg("folder"))
+        .def_property_readonly("human_summary", &human_summary);
+
+    m.def(
+        "mesh_part",
+        [](const std::string& path, double size, double size_factor, int threads) {
+            return mesh_part(path, make_options(size, size_factor, threads));
+        },
+        py::arg("path"), py::arg("size") = 0.0, py::arg("size_factor") = 1.0, py::arg("threads") = 0,
+        py::call_guard<py::gil_scoped_release>());
+    m.def(
+        "analyze_file",
+        [](const std::string& path, double size, double size_factor, int threads) {
+            return analyze(path, make_options(size, size_factor, threads));
+        },
+        py::arg("path"), py::arg("size") = 0.0, py::arg("size_factor") = 1.0, py::arg("threads") = 0,
+        py::call_guard<py::gil_scoped_release>());
+    m.def(
+        "analyze_shape",
+        [](const BrepModel& shape, double size, double size_factor, int threads) {
+            const auto o = make_options(size, size_factor, threads);
+            AnalysisResult r = mesh_model(shape, o);
+            analyze_mesh(r, o);
+            return r;
+        },
+        py::arg("shape"), py::arg("size") = 0.0, py::arg("size_factor") = 1.0, py::arg("threads") = 0,
+        py::call_guard<py::gil_scoped_release>());
+}
+
+}  // namespace framefix::python

@@ -1,0 +1,40 @@
+"""``python -m framefix mesh|analyze PART [--size H] [--out DIR]``: the command line, in Python.
+
+Same exit codes as the ``framefix`` program: 0 done, 2 bad input, 3 internal error.
+"""
+import argparse
+import sys
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python -m framefix")
+    parser.add_argument("command", choices=["mesh", "analyze"])
+    parser.add_argument("part")
+    parser.add_argument("--size", type=float, default=0.0)
+    parser.add_argument("--size-factor", type=float, default=1.0)
+    parser.add_argument("--threads", type=int, default=0)
+    parser.add_argument("--out", default="framefix-out")
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as e:
+        return 2 if e.code else 0
+    import framefix
+    try:
+        if args.command == "mesh":
+            result = framefix.mesh_part(args.part, args.size, args.size_factor, args.threads)
+        else:
+            result = framefix.analyze(args.part, args.size, args.size_factor, args.threads)
+        result.write_outputs(args.out)
+    except framefix.Error as e:
+        print(f"framefix: error [{str(e).split(':', 1)[0]}]: {str(e).split(': ', 1)[-1]}", file=sys.stderr)
+        return 2
+    except Exception as e:  # a backend bug: report it, never a stack trace
+        print(f"framefix: internal error: {e}", file=sys.stderr)
+        return 3
+    print(result.human_summary)
+    print(f"results: {args.out}/report.json")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,61 @@
+"""The framefix Python module (built for /usr/bin/python3, the interpreter FreeCAD embeds)."""
+import numpy as np
+import pytest
+
+import framefix
+from conftest import SAMPLES, TESTDATA
+
+
+def test_load_and_classify_cube():
+    shape = framefix.load_shape(str(SAMPLES / "cube.step"))
+    assert (shape.num_faces, shape.num_edges, shape.num_vertices) == (6, 12, 8)
+    features = framefix.classify_features(shape)
+    assert len(features) == 12
+    assert [f.edge for f in features] == list(range(1, 13))
+    assert all(f.valence == 1 for f in features)
+    assert all(80 < f.angle_min_deg <= f.angle_max_deg < 100 for f in features)
+
+
+def test_brep_string_round_trip():
+    shape = framefix.load_shape(str(SAMPLES / "notch.step"))
+    again = framefix.load_brep_string(framefix.to_brep_string(shape))
+    assert again.num_edges == shape.num_edges
+    assert again.volume == pytest.approx(shape.volume, rel=1e-9)
+
+
+def test_tetrahedralize_returns_numpy_arrays():
+    shape = framefix.load_shape(str(SAMPLES / "cube.step"))
+    h = framefix.default_size(shape, 8000)
+    mesh = framefix.tetrahedralize(shape, h)
+    assert isinstance(mesh.points, np.ndarray) and mesh.points.shape[1] == 3
+    assert mesh.tets.shape == (mesh.num_tets, 4)
+    assert mesh.boundary_faces.shape[0] == mesh.face_tags.shape[0]
+    assert set(np.unique(mesh.face_tags)) == set(range(1, 7))
+    assert set(np.unique(mesh.edge_tags)) == set(range(1, 13))
+    p = mesh.points[mesh.tets]
+    vol = np.einsum("ij,ij->i", p[:, 1] - p[:, 0], np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 0])) / 6
+    assert vol.min() > 0
+    q = framefix.mesh_quality(mesh)
+    assert q.edge_fraction_in_range >= 0.9
+
+
+@pytest.mark.parametrize("name,words", [
+    ("empty.step", ["empty"]), ("garbage.step", ["garbage.step"]), ("truncated.step", ["truncated.step"]),
+    ("face.brep", ["solid"]), ("open_shell.brep", ["open_shell.brep"]), ("two_solids.step", ["2 solids"]),
+])
+def test_bad_files_raise_framefix_error(name, words):
+    with pytest.raises(framefix.Error) as e:
+        framefix.load_shape(str(TESTDATA / name))
+    for w in words:
+        assert w in str(e.value)
+
+
+def test_missing_file_and_bad_brep_string_raise_framefix_error():
+    with pytest.raises(framefix.Error, match="not found"):
+        framefix.load_shape("/nonexistent/x.step")
+    with pytest.raises(framefix.Error):
+        framefix.load_brep_string("this is not a BREP")
+
+
+def test_error_is_an_exception_class():
+    assert issubclass(framefix.Error, Exception)
