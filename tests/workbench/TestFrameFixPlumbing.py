@@ -1,0 +1,219 @@
+"""Headless workbench plumbing with fake backends (run: freecadcmd -t TestFrameFixPlumbing
+-M workbench -M tests/workbench). The canned backend's curves are made up: these tests check
+that objects, reruns, undo and failures behave, never what the analysis finds."""
+import os
+import tempfile
+import time
+import unittest
+
+import FreeCAD
+import Part
+
+from framefix_wb import analysis, job, report, runner, shapes, sizing
+from framefix_wb.errors import BackendError, SelectionError
+from framefix_wb.objects.properties import report_of
+
+FAKES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fake_backends")
+
+
+def use_backend(name):
+    os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, name)
+    os.environ.pop("FRAMEFIX_PYTHONPATH", None)
+
+
+class Pure(unittest.TestCase):
+    def test_default_size_gives_about_target_tets(self):
+        h = sizing.default_size(1.0)
+        self.assertAlmostEqual(sizing.estimate_tets(1.0, h) / sizing.TARGET_TETS, 1.0, delta=0.1)
+
+    def test_progress_lines(self):
+        self.assertEqual(job.parse_progress("progress mesh 0.25\n"), ("mesh", 0.25))
+        self.assertIsNone(job.parse_progress("progress mesh notanumber"))
+        self.assertAlmostEqual(job.overall_fraction("singularities", 1.0), 1.0)
+
+    def test_report_without_summary_is_rejected(self):
+        with self.assertRaisesRegex(BackendError, "summary"):
+            report.check_report({"version": 1, "singularities": {"curves": []}})
+
+    def test_report_with_bad_point_is_rejected(self):
+        bad = {"version": 1, "singularities": {
+            "summary": dict.fromkeys(report.SUMMARY_KEYS, 0),
+            "curves": [{"kind": "3-5", "points": [[0, 0, "x"]]}]}}
+        with self.assertRaisesRegex(BackendError, r"curves\[0\]"):
+            report.check_report(bad)
+
+
+class Selection(unittest.TestCase):
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("FrameFixSelection")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def test_two_solids_are_refused_with_their_count(self):
+        obj = self.doc.addObject("Part::Feature", "Two")
+        obj.Shape = Part.makeCompound([Part.makeBox(1, 1, 1),
+                                       Part.makeBox(1, 1, 1, FreeCAD.Vector(3, 0, 0))])
+        with self.assertRaisesRegex(SelectionError, "2 solids"):
+            shapes.solid_of(obj)
+
+    def test_a_face_is_refused(self):
+        obj = self.doc.addObject("Part::Feature", "Face")
+        obj.Shape = Part.makePlane(1, 1)
+        with self.assertRaisesRegex(SelectionError, "exactly one solid"):
+            shapes.solid_of(obj)
+
+    def test_two_selected_objects_are_refused(self):
+        a = self.doc.addObject("Part::Box", "A")
+        b = self.doc.addObject("Part::Box", "B")
+        with self.assertRaisesRegex(SelectionError, "2 objects selected"):
+            shapes.source_from_selection([a, b])
+
+    def test_link_gives_the_moved_solid(self):
+        box = self.doc.addObject("Part::Box", "Box")
+        link = self.doc.addObject("App::Link", "Link")
+        link.LinkedObject = box
+        link.Placement.Base = FreeCAD.Vector(10, 0, 0)
+        self.doc.recompute()
+        self.assertAlmostEqual(shapes.solid_of(link).BoundBox.XMin, 10.0)
+
+    def test_body_gives_its_solid(self):
+        body = self.doc.addObject("PartDesign::Body", "Body")
+        body.addObject(self.doc.addObject("PartDesign::AdditiveBox", "Pad"))
+        self.doc.recompute()
+        self.assertAlmostEqual(shapes.solid_of(body).Volume, 1000.0)
+
+
+class FailingBackends(unittest.TestCase):
+    def run_fake(self, name, timeout=20.0):
+        use_backend(name)
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, timeout=timeout)
+        try:
+            return runner.run_sync(j)
+        finally:
+            j.cleanup()
+
+    def test_segfault_is_reported_as_a_crash(self):
+        with self.assertRaisesRegex(BackendError, "crashed.*SIGSEGV"):
+            self.run_fake("segv.sh")
+
+    def test_hang_is_stopped_by_the_timeout(self):
+        start = time.monotonic()
+        with self.assertRaisesRegex(BackendError, "did not finish within 2 s"):
+            self.run_fake("hang.sh", timeout=2.0)
+        self.assertLess(time.monotonic() - start, 10.0)
+
+    def test_garbage_report_is_refused(self):
+        with self.assertRaisesRegex(BackendError, "not valid JSON"):
+            self.run_fake("garbage.sh")
+
+    def test_rejected_input_shows_the_backends_message(self):
+        with self.assertRaisesRegex(BackendError, r"rejected the input in stage load: .*2 solids"):
+            self.run_fake("reject.sh")
+
+    def test_missing_backend_says_what_to_set(self):
+        os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, "does-not-exist")
+        with self.assertRaisesRegex(BackendError, "FRAMEFIX_BACKEND"):
+            job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2)
+
+
+class Objects(unittest.TestCase):
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("FrameFixObjects")
+        self.box = self.doc.addObject("Part::Box", "Box")
+        self.box.Label = "Bracket"
+        self.doc.recompute()
+        self.runs = tempfile.NamedTemporaryFile(suffix=".log", delete=False).name
+        os.environ["FAKE_BACKEND_LOG"] = self.runs
+        use_backend("canned.py")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+        os.environ.pop("FAKE_BACKEND_LOG", None)
+        os.unlink(self.runs)
+
+    def run_count(self):
+        with open(self.runs) as f:
+            return len(f.readlines())
+
+    def test_objects_are_grouped_under_the_part_label(self):
+        curves = analysis.make_analysis(self.box, 0.5)
+        group = curves.getParentGroup()
+        self.assertEqual(group.Label, "FrameFix analysis of Bracket")
+        self.assertEqual(len(group.Group), 3)
+
+    def test_curves_have_one_kind_per_edge(self):
+        curves = analysis.make_analysis(self.box, 0.5)
+        self.assertEqual(len(curves.EdgeKinds), len(curves.Shape.Edges))
+        self.assertEqual(sorted(set(curves.EdgeKinds)), [3, 5, 35])
+        self.assertEqual(curves.Curves35, 1)
+        self.assertFalse(curves.Meshable)
+
+    def test_nodes_mark_the_invalid_one(self):
+        curves = analysis.make_analysis(self.box, 0.5)
+        nodes = self.doc.getObject("SingularNodes")
+        self.assertEqual(list(nodes.NodeValid), [0, 1])
+        self.assertEqual(len(nodes.Shape.Vertexes), 2)
+
+    def test_feature_curve_without_points_uses_the_parts_edge(self):
+        analysis.make_analysis(self.box, 0.5)
+        features = self.doc.getObject("FeatureCurves")
+        self.assertEqual(len(features.Shape.Edges), 2)
+        self.assertEqual(sorted(features.EdgeValences), [1, 3])
+
+    def test_recompute_without_change_does_not_rerun(self):
+        analysis.make_analysis(self.box, 0.5)
+        self.doc.recompute()
+        self.assertEqual(self.run_count(), 1)
+
+    def test_editing_the_part_touches_and_reruns(self):
+        curves = analysis.make_analysis(self.box, 0.5)
+        self.box.Length = 2
+        self.doc.recompute([self.box])
+        self.assertIn("Touched", curves.State)
+        self.doc.recompute()
+        self.assertEqual(self.run_count(), 2)
+        self.assertTrue(curves.isValid())
+
+    def test_changing_the_size_reruns_with_it(self):
+        curves = analysis.make_analysis(self.box, 0.5)
+        curves.Size = 0.25
+        self.doc.recompute()
+        self.assertEqual(report_of(curves)["mesh"]["size"], 0.25)
+
+    def test_undo_removes_the_analysis(self):
+        self.doc.UndoMode = 1
+        names = sorted(o.Name for o in self.doc.Objects)
+        analysis.make_analysis(self.box, 0.5)
+        self.doc.undo()
+        self.assertEqual(sorted(o.Name for o in self.doc.Objects), names)
+
+    def test_saved_document_reloads_without_rerun(self):
+        analysis.make_analysis(self.box, 0.5)
+        path = os.path.join(tempfile.mkdtemp(), "saved.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        self.doc = FreeCAD.openDocument(path)
+        curves = self.doc.getObject("SingularCurves")
+        curves.touch()
+        self.doc.recompute()
+        self.assertTrue(curves.isValid())
+        self.assertEqual(self.run_count(), 1)
+
+    def test_failed_run_leaves_the_document_unchanged(self):
+        names = sorted(o.Name for o in self.doc.Objects)
+        digest = shapes.shape_digest(self.box.Shape)
+        for fake in ("segv.sh", "garbage.sh", "reject.sh"):
+            use_backend(fake)
+            with self.assertRaises(BackendError):
+                analysis.make_analysis(self.box, 0.5)
+        self.assertEqual(sorted(o.Name for o in self.doc.Objects), names)
+        self.assertEqual(shapes.shape_digest(self.box.Shape), digest)
+
+    def test_recompute_with_crashing_backend_marks_the_error_only(self):
+        curves = analysis.make_analysis(self.box, 0.5)
+        use_backend("segv.sh")
+        self.box.Height = 3
+        self.doc.recompute()
+        self.assertFalse(curves.isValid())
+        self.assertTrue(self.box.isValid())

@@ -1,0 +1,60 @@
+#!/usr/bin/python3
+"""Fake backend for GUI and object plumbing tests: the CLI's interface, a canned report.
+
+NOT an oracle: its curves are made up. FAKE_BACKEND_LOG (if set) gets one line per run, so
+tests can count reruns; FAKE_BACKEND_DELAY slows the progress lines down (seconds each).
+"""
+import json
+import os
+import sys
+import time
+
+
+def main(argv):
+    if len(argv) < 4 or argv[0] != "analyze" or "--out" not in argv:
+        print("framefix: error [cli]: usage: framefix analyze PART [--size H] --out DIR",
+              file=sys.stderr)
+        return 2
+    part, out = argv[1], argv[argv.index("--out") + 1]
+    size = float(argv[argv.index("--size") + 1]) if "--size" in argv else 0.1
+    if not os.path.isfile(part) or os.path.getsize(part) == 0:
+        print("framefix: error [load]: cannot read %s" % part, file=sys.stderr)
+        return 2
+    if os.environ.get("FAKE_BACKEND_LOG"):
+        with open(os.environ["FAKE_BACKEND_LOG"], "a") as f:
+            f.write("analyze %s size=%r\n" % (os.path.basename(part), size))
+    delay = float(os.environ.get("FAKE_BACKEND_DELAY", "0.02"))
+    for stage in ("load", "mesh", "field", "singularities"):
+        for fraction in (0.0, 0.5, 1.0):
+            print("progress %s %.2f" % (stage, fraction), file=sys.stderr, flush=True)
+            time.sleep(delay)
+    print("fake backend: canned report", flush=True)
+    curves = [
+        {"id": 0, "kind": "valence3", "length": 1.0, "ends": [0, 1],
+         "points": [[0.2, 0.2, 0.0], [0.2, 0.2, 0.5], [0.2, 0.2, 1.0]]},
+        {"id": 1, "kind": "valence5", "length": 1.0, "ends": [2, 3],
+         "points": [[0.8, 0.2, 0.0], [0.8, 0.2, 1.0]]},
+        {"id": 2, "kind": "3-5", "length": 0.8, "ends": [4, 5],
+         "points": [[0.5, 0.5, 0.1], [0.45, 0.5, 0.5], [0.5, 0.5, 0.9]]},
+    ]
+    nodes = [{"id": 0, "position": [0.5, 0.5, 0.5], "boundary": False, "n3": 1, "n5": 1,
+              "valid": False},
+             {"id": 1, "position": [0.2, 0.2, 1.0], "boundary": True, "n3": 1, "n5": 0,
+              "valid": True}]
+    summary = {"curves": 3, "valence3": 1, "valence5": 1, "curves_3_5": 1, "nodes": 2,
+               "invalid_nodes": 1, "meshable": False}
+    report = {"version": 1, "input": {"path": part, "kind": "brep"},
+              "mesh": {"vertices": 100, "tets": 321, "size": size},
+              "features": {"curves": 2, "by_valence": {"1": 1, "3": 1}},
+              "feature_curves": [{"edge": 1, "valence": 1, "points": []},
+                                 {"edge": 2, "valence": 3,
+                                  "points": [[0, 0, 1], [1, 0, 1]]}],
+              "singularities": {"curves": curves, "nodes": nodes, "summary": summary},
+              "timings_s": {"total": 0.1}, "peak_memory_mb": 1.0}
+    with open(os.path.join(out, "report.json"), "w") as f:
+        json.dump(report, f)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,8 @@
+"""FrameFix workbench package.
+
+Everything outside commands/, taskpanels/ and viewproviders/ imports without the GUI, so
+freecadcmd and macros can build the analysis objects. The backend always runs as a child
+process (the `framefix` CLI or `/usr/bin/python3 -m framefix`), never inside FreeCAD.
+"""
+
+__version__ = "0.1.0"

@@ -1,0 +1,129 @@
+"""Making and updating an analysis in a document, with or without the GUI.
+
+    curves = make_analysis(part)                  # runs the backend, then adds the objects
+    curves = make_analysis(part, size, report=r)  # objects from a report the panel already has
+
+The backend runs before anything is added, so a failed run leaves the document unchanged.
+Each change is one undoable transaction.
+"""
+import json
+
+import FreeCAD
+
+from . import shapes, sizing, style
+from .errors import FrameFixError
+from .job import AnalysisJob
+from .runner import run_sync
+
+GROUP_LABEL = "FrameFix analysis of %s"
+
+
+def input_digest(solid, size):
+    return "%s size=%r" % (shapes.shape_digest(solid), float(size))
+
+
+def _gui_idle():
+    """Keep the window painted while a recompute waits for the backend (input is blocked)."""
+    if FreeCAD.GuiUp:
+        from PySide2 import QtCore, QtWidgets
+        QtWidgets.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
+
+
+def run_analysis(solid, size, backend=None, timeout=None):
+    """The checked report of the backend on `solid`; raises BackendError."""
+    job = AnalysisJob(solid, size, backend, timeout)
+    try:
+        return run_sync(job, on_idle=_gui_idle)
+    finally:
+        job.cleanup()
+
+
+def _add(doc, type_name, name, label, proxy_class, vp_module, vp_class):
+    obj = doc.addObject(type_name, name)
+    proxy_class(obj)
+    obj.Label = label
+    if FreeCAD.GuiUp:
+        import importlib
+        getattr(importlib.import_module("framefix_wb.viewproviders." + vp_module), vp_class)(
+            obj.ViewObject)
+    return obj
+
+
+def _fade_source(curves, source):
+    vo = getattr(source, "ViewObject", None) if FreeCAD.GuiUp else None
+    if vo is not None and hasattr(vo, "Transparency"):
+        if curves.SourceTransparency < 0:
+            curves.SourceTransparency = vo.Transparency
+        vo.Transparency = max(vo.Transparency, style.SOURCE_TRANSPARENCY)
+
+
+def _recompute(doc, objects):
+    """Recompute `objects` (not the user's other touched features); raise if one failed."""
+    doc.recompute(objects)
+    failed = [o for o in objects if not o.isValid()]
+    if failed:
+        raise FrameFixError("could not build %s: %s" % (
+            failed[0].Label, " ".join(failed[0].getStatusString().split())))
+
+
+class _Transaction:
+    def __init__(self, doc, name):
+        self.doc, self.name = doc, name
+
+    def __enter__(self):
+        self.doc.openTransaction(self.name)
+
+    def __exit__(self, kind, value, tb):
+        if kind is None:
+            self.doc.commitTransaction()
+        else:
+            self.doc.abortTransaction()
+
+
+def make_analysis(source, size=None, report=None, digest=None, backend=None):
+    """Add the analysis group of `source` (a part, Body or Link); returns SingularCurves.
+
+    Without `report` the backend runs first (synchronously). With it, `digest` must be
+    input_digest() of the solid and size that report was computed from.
+    """
+    from .objects.feature_curves import FeatureCurves
+    from .objects.singular_curves import SingularCurves
+    from .objects.singular_nodes import SingularNodes
+    solid = shapes.solid_of(source)
+    size = float(size or sizing.default_size(abs(solid.Volume)))
+    if report is None:
+        report, digest = run_analysis(solid, size, backend), input_digest(solid, size)
+    doc = source.Document
+    with _Transaction(doc, "FrameFix analysis"):
+        group = doc.addObject("App::DocumentObjectGroup", "FrameFixAnalysis")
+        group.Label = GROUP_LABEL % shapes.label_of(source)
+        curves = _add(doc, "Part::FeaturePython", "SingularCurves", "Singular curves",
+                      SingularCurves, "singular_curves", "ViewProviderSingularCurves")
+        curves.Source, curves.Size = source, size
+        curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
+        nodes = _add(doc, "Part::FeaturePython", "SingularNodes", "Singular nodes",
+                     SingularNodes, "singular_nodes", "ViewProviderSingularNodes")
+        features = _add(doc, "Part::FeaturePython", "FeatureCurves", "Feature curves",
+                        FeatureCurves, "feature_curves", "ViewProviderFeatureCurves")
+        nodes.Analysis = features.Analysis = curves
+        group.addObjects([curves, nodes, features])
+        _fade_source(curves, source)
+        _recompute(doc, [curves, nodes, features])
+    return curves
+
+
+def update_analysis(curves, size, report, digest):
+    """Store a new run (from the task panel) on an existing analysis and recompute it."""
+    doc = curves.Document
+    with _Transaction(doc, "FrameFix analysis"):
+        curves.Size = float(size)
+        curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
+        _fade_source(curves, curves.Source)
+        _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])
+    return curves
+
+
+def analyses_of(source):
+    """The SingularCurves objects analysing `source`."""
+    return [o for o in source.InList
+            if type(getattr(o, "Proxy", None)).__name__ == "SingularCurves"]

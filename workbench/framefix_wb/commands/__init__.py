@@ -1,0 +1,11 @@
+"""GUI commands (import only with the GUI up)."""
+
+
+def register_commands():
+    """Register the FrameFix commands with FreeCAD; returns their names, in toolbar order."""
+    import FreeCADGui
+    from .analyze import AnalyzeCommand
+    commands = [("FrameFix_Analyze", AnalyzeCommand())]
+    for name, command in commands:
+        FreeCADGui.addCommand(name, command)
+    return [name for name, _ in commands]

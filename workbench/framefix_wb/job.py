@@ -1,0 +1,105 @@
+"""One backend run: its temporary folder, command line, progress parsing and outcome.
+
+Both runners (runner.run_sync headless, gui_runner.ProcessRunner in the GUI) drive an
+AnalysisJob the same way: start `job.argv` with `job.env`, feed every output line to
+`job.add_line`, then call `job.finish(exit_code, crashed)` for the checked report.
+The user's shape only ever leaves FreeCAD as a BREP file in the job's own temp folder.
+"""
+import os
+import re
+import shutil
+import signal
+import tempfile
+
+from .backend import find_backend
+from .errors import BackendError
+from .report import load_report
+
+DEFAULT_TIMEOUT_S = 1800.0
+# Share of the whole run each backend stage takes, measured roughly on the samples.
+STAGE_WEIGHTS = (("load", 0.05), ("mesh", 0.25), ("field", 0.55), ("singularities", 0.15))
+_PROGRESS = re.compile(r"^progress\s+(\w+)\s+([0-9.eE+-]+)\s*$")
+_ERROR = re.compile(r"^framefix: error \[(\w*)\]: (.*)$")
+
+
+def parse_progress(line):
+    """(stage, fraction in 0..1) for a `progress <stage> <fraction>` line, else None."""
+    m = _PROGRESS.match(line.strip())
+    if not m:
+        return None
+    try:
+        fraction = float(m.group(2))
+    except ValueError:
+        return None
+    return m.group(1), min(max(fraction, 0.0), 1.0)
+
+
+def overall_fraction(stage, fraction):
+    """Fraction of the whole analysis done when `stage` is `fraction` done."""
+    done = 0.0
+    for name, weight in STAGE_WEIGHTS:
+        if name == stage:
+            return done + weight * fraction
+        done += weight
+    return None  # a stage this workbench does not know: keep the bar where it is
+
+
+def timeout_from_env(default=DEFAULT_TIMEOUT_S):
+    try:
+        return float(os.environ.get("FRAMEFIX_TIMEOUT", default))
+    except ValueError:
+        return default
+
+
+class AnalysisJob:
+    """`framefix analyze <tmp>/shape.brep [--size H] --out <tmp>/out` for one shape."""
+
+    def __init__(self, shape, size=None, backend=None, timeout=None):
+        self.backend = backend or find_backend()
+        self.timeout = timeout_from_env() if timeout is None else float(timeout)
+        self.workdir = tempfile.mkdtemp(prefix="framefix_")
+        self.brep_path = os.path.join(self.workdir, "shape.brep")
+        self.out_dir = os.path.join(self.workdir, "out")
+        os.mkdir(self.out_dir)
+        shape.exportBrep(self.brep_path)
+        self.argv = self.backend.argv + ["analyze", self.brep_path, "--out", self.out_dir]
+        if size:
+            self.argv += ["--size", repr(float(size))]
+        self.env = self.backend.environment()
+        self.lines = []  # every output line, for the log and for error messages
+        self.error_line = None  # (stage, message) of the backend's last `framefix: error` line
+
+    def add_line(self, line):
+        """Record one output line; returns (stage, fraction) if it is a progress line."""
+        line = line.rstrip("\r\n")
+        self.lines.append(line)
+        m = _ERROR.match(line)
+        if m:
+            self.error_line = (m.group(1), m.group(2))
+        return parse_progress(line)
+
+    def _tail(self, n=5):
+        tail = [l for l in self.lines if l.strip() and not parse_progress(l)][-n:]
+        return ("; last output: " + " | ".join(tail)[:400]) if tail else ""
+
+    def finish(self, exit_code, crashed=False, signal_number=None):
+        """The checked report of a finished run, or a BackendError saying why there is none."""
+        if crashed or (exit_code is not None and exit_code < 0):
+            sig = signal_number or (-exit_code if exit_code and exit_code < 0 else None)
+            name = signal.Signals(sig).name if sig in signal.Signals._value2member_map_ else "a signal"
+            raise BackendError("the backend crashed (killed by %s)%s; your document is unchanged"
+                               % (name, self._tail()), "crash")
+        if exit_code != 0:
+            stage, message = self.error_line or ("", "no error message")
+            what = {2: "rejected the input", 3: "hit an internal error"}.get(
+                exit_code, "failed with exit code %s" % exit_code)
+            where = " in stage %s" % stage if stage else ""
+            raise BackendError("the backend %s%s: %s" % (what, where, message), stage)
+        return load_report(os.path.join(self.out_dir, "report.json"))
+
+    def timeout_error(self):
+        return BackendError("the backend did not finish within %.0f s and was stopped%s"
+                            % (self.timeout, self._tail()), "timeout")
+
+    def cleanup(self):
+        shutil.rmtree(self.workdir, ignore_errors=True)

@@ -1,0 +1,1 @@
+"""FeaturePython proxies. Their module paths are stored in saved documents: never move them."""

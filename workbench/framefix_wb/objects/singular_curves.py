@@ -1,0 +1,67 @@
+"""SingularCurves: the analysis object. It owns the backend run and its report; the nodes and
+feature curves objects read the report from it.
+
+Recompute reruns the backend only when the analysed solid or the size changed (InputDigest),
+so results applied from the task panel are not computed twice.
+"""
+import json
+
+import FreeCAD
+
+from .. import geometry, shapes, sizing, style
+from ..report import summary_text
+from .properties import HIDDEN, READ_ONLY, ProxyBase, add, report_of
+
+SUMMARY_PROPERTIES = (
+    ("Curves", "curves", "singular curves"), ("Valence3", "valence3", "valence 3 curves"),
+    ("Valence5", "valence5", "valence 5 curves"), ("Curves35", "curves_3_5", "3-5 curves"),
+    ("Nodes", "nodes", "singular nodes"), ("InvalidNodes", "invalid_nodes", "invalid nodes"))
+
+
+class SingularCurves(ProxyBase):
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.setup(obj)
+
+    def setup(self, obj):
+        add(obj, "App::PropertyLink", "Source", "FrameFix",
+            "The analysed solid; editing it marks this analysis for recompute")
+        add(obj, "App::PropertyLength", "Size", "FrameFix",
+            "Target tet edge length (model units); 0 = about %d tets" % sizing.TARGET_TETS)
+        add(obj, "App::PropertyString", "Report", "FrameFix", "report.json of the last run", HIDDEN)
+        add(obj, "App::PropertyString", "InputDigest", "FrameFix", "solid and size of that run", HIDDEN)
+        add(obj, "App::PropertyIntegerList", "EdgeKinds", "FrameFix",
+            "per edge: 3 valence 3, 5 valence 5, 35 3-5 curve", HIDDEN)
+        add(obj, "App::PropertyIntegerList", "EdgeCurves", "FrameFix", "per edge: curve id", HIDDEN)
+        add(obj, "App::PropertyInteger", "SourceTransparency", "FrameFix",
+            "source's transparency before the analysis (-1: untouched)", HIDDEN, -1)
+        for name, _, doc in SUMMARY_PROPERTIES:
+            add(obj, "App::PropertyInteger", name, "Summary", "Number of " + doc, READ_ONLY)
+        add(obj, "App::PropertyBool", "Meshable", "Summary",
+            "No 3-5 curve and no invalid node", READ_ONLY)
+        add(obj, "App::PropertyInteger", "Tets", "Summary", "Tets of the analysed mesh", READ_ONLY)
+
+    def onDocumentRestored(self, obj):
+        self.setup(obj)
+
+    def execute(self, obj):
+        from ..analysis import input_digest, run_analysis
+        solid = shapes.solid_of(obj.Source)
+        size = obj.Size.Value or sizing.default_size(abs(solid.Volume))
+        digest = input_digest(solid, size)
+        if digest != obj.InputDigest or not obj.Report:
+            report = run_analysis(solid, size)
+            obj.Report = json.dumps(report["raw"])
+            obj.InputDigest = digest
+            FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (
+                obj.Source.Label, summary_text(report["summary"], report["mesh"])))
+        report = report_of(obj)
+        shape, codes, owners = geometry.polylines(
+            report["curves"], lambda c: style.CURVE_KIND_CODES[c["kind"]])
+        obj.Shape = shape
+        obj.EdgeCurves = [report["curves"][i]["id"] for i in owners]
+        obj.EdgeKinds = codes  # after Shape: the view provider colours edges on this change
+        for name, key, _ in SUMMARY_PROPERTIES:
+            setattr(obj, name, report["summary"][key])
+        obj.Meshable = report["summary"]["meshable"]
+        obj.Tets = int(report["mesh"].get("tets", 0))

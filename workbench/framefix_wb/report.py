@@ -1,0 +1,100 @@
+"""Reading the backend's report.json (version 1, see DESIGN.md) into checked plain data.
+
+The report comes from a child process that may have died half-way or printed garbage: every
+field the workbench uses is checked here, once, and a bad report becomes a BackendError that
+says which field is wrong. Nothing downstream re-checks.
+"""
+import json
+import math
+
+from .errors import BackendError
+
+CURVE_KINDS = ("valence3", "valence5", "3-5")
+SUMMARY_KEYS = ("curves", "valence3", "valence5", "curves_3_5", "nodes", "invalid_nodes")
+
+
+def _fail(what):
+    raise BackendError("the backend's report.json is unusable: " + what)
+
+
+def _points(value, where):
+    if not isinstance(value, list):
+        _fail("%s.points is not a list" % where)
+    points = []
+    for p in value:
+        if (not isinstance(p, list) or len(p) != 3
+                or not all(isinstance(c, (int, float)) and math.isfinite(c) for c in p)):
+            _fail("%s.points holds %r, not [x, y, z]" % (where, p))
+        points.append((float(p[0]), float(p[1]), float(p[2])))
+    return points
+
+
+def _curve(c, i):
+    where = "singularities.curves[%d]" % i
+    if not isinstance(c, dict) or c.get("kind") not in CURVE_KINDS:
+        _fail("%s.kind is not one of %s" % (where, ", ".join(CURVE_KINDS)))
+    return {"id": int(c.get("id", i)), "kind": c["kind"], "length": float(c.get("length", 0.0)),
+            "ends": list(c.get("ends", [])), "points": _points(c.get("points"), where)}
+
+
+def _node(n, i):
+    where = "singularities.nodes[%d]" % i
+    if not isinstance(n, dict):
+        _fail(where + " is not an object")
+    position = _points([n.get("position")], where)[0]
+    return {"id": int(n.get("id", i)), "position": position, "boundary": bool(n.get("boundary")),
+            "n3": int(n.get("n3", 0)), "n5": int(n.get("n5", 0)), "valid": bool(n.get("valid", True))}
+
+
+def _feature_curve(f, i):
+    where = "feature_curves[%d]" % i
+    if not isinstance(f, dict) or not isinstance(f.get("valence"), int):
+        _fail(where + ".valence is not an integer")
+    return {"edge": int(f.get("edge", 0)), "valence": f["valence"],
+            "points": _points(f.get("points", []), where)}
+
+
+def check_report(data):
+    """The parts of a report dict the workbench uses, checked; raises BackendError."""
+    if not isinstance(data, dict):
+        _fail("it is not a JSON object")
+    if data.get("version") != 1:
+        _fail("version is %r, this workbench reads version 1" % data.get("version"))
+    sing = data.get("singularities")
+    if not isinstance(sing, dict) or not isinstance(sing.get("summary"), dict):
+        _fail("singularities.summary is missing")
+    summary = dict(sing["summary"])
+    for key in SUMMARY_KEYS:
+        if not isinstance(summary.get(key), int):
+            _fail("singularities.summary.%s is not an integer" % key)
+    summary["meshable"] = bool(summary.get("meshable"))
+    curves = [_curve(c, i) for i, c in enumerate(sing.get("curves") or [])]
+    nodes = [_node(n, i) for i, n in enumerate(sing.get("nodes") or [])]
+    features = [_feature_curve(f, i) for i, f in enumerate(data.get("feature_curves") or [])]
+    mesh = data.get("mesh") if isinstance(data.get("mesh"), dict) else {}
+    return {"summary": summary, "curves": curves, "nodes": nodes, "feature_curves": features,
+            "mesh": mesh, "timings_s": data.get("timings_s") or {}, "raw": data}
+
+
+def load_report(path):
+    """check_report of the file at `path`; a missing or non-JSON file is a BackendError."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+    except FileNotFoundError:
+        raise BackendError("the backend finished but wrote no report.json") from None
+    except (ValueError, UnicodeDecodeError) as e:
+        raise BackendError("the backend's report.json is not valid JSON (%s)" % e) from None
+    return check_report(data)
+
+
+def summary_text(summary, mesh=None):
+    """One line for the console: '1 3-5 curve, 4 singular curves (...) - NOT hex-meshable'."""
+    verdict = "hex-meshable" if summary["meshable"] else "NOT hex-meshable"
+    text = ("%d singular curves (%d valence 3, %d valence 5, %d 3-5 curves), "
+            "%d nodes (%d invalid): %s" % (
+                summary["curves"], summary["valence3"], summary["valence5"],
+                summary["curves_3_5"], summary["nodes"], summary["invalid_nodes"], verdict))
+    if mesh and mesh.get("tets"):
+        text += "; mesh %s tets, size %.4g" % (mesh.get("tets"), float(mesh.get("size", 0)))
+    return text

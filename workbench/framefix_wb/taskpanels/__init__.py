@@ -1,0 +1,1 @@
+"""Task panels (import only with the GUI up)."""

@@ -1,0 +1,127 @@
+"""ProcessRunner: an AnalysisJob in a QProcess, so FreeCAD's GUI thread never waits for it.
+
+The child is started through setsid(1), which makes it the leader of its own process group
+(it execs in place: same pid), so cancel and timeout kill it and everything it started
+without touching FreeCAD's own group. A crash, a non-zero exit or a bad report ends in
+`failed(message)`; only a checked report reaches `succeeded(report)`.
+"""
+import os
+import signal
+
+from PySide2 import QtCore
+
+from ..errors import BackendError
+from ..job import overall_fraction
+
+SETSID = "/usr/bin/setsid"
+
+
+class ProcessRunner(QtCore.QObject):
+    progress = QtCore.Signal(str, float)  # stage, overall fraction 0..1
+    line = QtCore.Signal(str)  # one line of the backend's output
+    succeeded = QtCore.Signal(object)  # the checked report (dict)
+    failed = QtCore.Signal(str)  # a message for the user
+
+    def __init__(self, parent=None):
+        super().__init__(parent)
+        self.job = None
+        self.process = None
+        self._buffer = b""
+        self._timer = QtCore.QTimer(self)
+        self._timer.setSingleShot(True)
+        self._timer.timeout.connect(self._on_timeout)
+
+    def is_running(self):
+        return self.process is not None
+
+    def start(self, job):
+        assert self.process is None, "one run at a time"
+        self.job, self._buffer = job, b""
+        self.process = p = QtCore.QProcess(self)
+        p.setProcessChannelMode(QtCore.QProcess.MergedChannels)
+        env = QtCore.QProcessEnvironment()
+        for key, value in job.env.items():
+            env.insert(key, value)
+        p.setProcessEnvironment(env)
+        p.readyReadStandardOutput.connect(self._on_output)
+        p.finished.connect(self._on_finished)
+        p.errorOccurred.connect(self._on_error)
+        if os.access(SETSID, os.X_OK):
+            p.start(SETSID, job.argv)
+        else:
+            p.start(job.argv[0], job.argv[1:])
+        self._timer.start(int(job.timeout * 1000))
+
+    def cancel(self):
+        """Kill a running backend; emits failed('cancelled ...')."""
+        if self.process is not None:
+            self._stop(BackendError("cancelled; your document is unchanged", "cancel"))
+
+    # -- internals ---------------------------------------------------------------------------
+    @staticmethod
+    def _kill(p):
+        pid = int(p.processId()) if p.state() != QtCore.QProcess.NotRunning else 0
+        if pid > 0 and os.getpgid(pid) == pid and pid != os.getpgrp():
+            try:
+                os.killpg(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        p.kill()
+        p.waitForFinished(2000)
+
+    def _stop(self, error):
+        """End the run with `error`, whatever the process still does."""
+        p = self.process
+        self._drain()
+        self.process = None  # from here on, the process' own signals are ignored
+        self._timer.stop()
+        for sig in (p.readyReadStandardOutput, p.finished, p.errorOccurred):
+            sig.disconnect()
+        self._kill(p)
+        p.deleteLater()
+        self.failed.emit(str(error))
+
+    def _drain(self):
+        if self.process is None:
+            return
+        self._buffer += bytes(self.process.readAllStandardOutput())
+        *lines, self._buffer = self._buffer.split(b"\n")
+        for raw in lines:
+            text = raw.decode("utf-8", "replace")
+            self.line.emit(text)
+            progress = self.job.add_line(text)
+            if progress:
+                fraction = overall_fraction(*progress)
+                if fraction is not None:
+                    self.progress.emit(progress[0], fraction)
+
+    def _on_output(self):
+        self._drain()
+
+    def _on_timeout(self):
+        if self.process is not None:
+            self._stop(self.job.timeout_error())
+
+    def _on_error(self, error):
+        if self.process is not None and error == QtCore.QProcess.FailedToStart:
+            self._stop(BackendError("could not start the backend %s: %s"
+                                    % (self.job.argv[0], self.process.errorString()), "start"))
+
+    def _on_finished(self, exit_code, exit_status):
+        if self.process is None:
+            return
+        self._drain()
+        if self._buffer:
+            self._buffer += b"\n"
+            self._drain()
+        p, self.process = self.process, None
+        self._timer.stop()
+        crashed = exit_status == QtCore.QProcess.CrashExit
+        p.deleteLater()
+        try:
+            report = self.job.finish(exit_code, crashed=crashed,
+                                     signal_number=exit_code if crashed else None)
+        except BackendError as e:
+            self.failed.emit(str(e))
+            return
+        self.succeeded.emit(report)

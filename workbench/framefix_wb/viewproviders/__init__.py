@@ -1,0 +1,1 @@
+"""View providers. Their module paths are stored in saved documents: never move them."""
