@@ -26,27 +26,43 @@ struct Constraints {
 // free inside. Feature valences come from `features` (keyed by the mesh's edge tags).
 Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features);
 
+// Sparse solver of the diffusion systems (linear_solver.h). ConjugateGradient won the
+// measurement in bench/bench_field.cpp (see the commit message / report); the direct ones stay
+// selectable for comparison.
+enum class SparseSolver : int { ConjugateGradient = 0, SimplicialLDLT = 1, Cholmod = 2 };
+
 struct FieldOptions {
-    int max_iterations = 60;     // MBO outer iterations
+    int max_iterations = 60;     // MBO outer iterations (0: linear init + projection only)
     double tolerance = 1e-4;     // relative change |q_k - q_k-1|_M / |q_k|_M once tau is at its floor
     bool relaxed_final_step = false;  // one last diffusion without projection (tau = 2 h_mean^2)
     int threads = 0;             // OpenMP threads, 0 = all
     ProgressSink progress;       // "field" stage
+    SparseSolver solver = SparseSolver::ConjugateGradient;
+    double tau_factor = 50;      // tau_0 = tau_factor / lambda_1, lambda_1 ~ (pi / bbox diagonal)^2
+    double tau_power = 3;        // tau_k = max(tau_0 / k^tau_power, h_mean^2)
+    double cg_tolerance = 1e-6;  // relative residual of each MBO diffusion solve (init: x 1e-2)
 };
 
 using FrameCoefficients = Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>;
 
 struct FrameField {
-    FrameCoefficients coefficients;  // #V x 9, SH band-4, unit norm on frames
-    Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> axes;  // #V x 9: axes a1 a2 a3 (columns of R) row by row
-    Eigen::VectorXd distance;        // #V distance to the frame manifold (non-zero only if relaxed)
+    FrameCoefficients coefficients;  // #V x 9, SH band-4, unit norm on frames; the relaxed field
+                                     // (|q| < 1 near singularities) if relaxed_final_step
+    Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> axes;  // #V x 9: axes a1 a2 a3 (columns of R) row by row;
+                                     // normal-aligned vertices: a3 = n; fixed: the constraint's rotation
+    Eigen::VectorXd distance;        // #V |q/|q| - proj(q)|, 0..~1.3 (non-zero only if relaxed)
     std::vector<ConstraintKind> kind;  // #V copy of the constraint kind
     double energy = 0;               // sum_c q_c^T K q_c of the final field
     double initial_energy = 0;       // after linear init + projection
     std::vector<double> energy_history;  // one entry per MBO iteration
-    int iterations = 0;
-    double seconds_init = 0, seconds_smooth = 0;
+    std::vector<double> change_history;  // one entry per MBO iteration: |q_k - q_k-1|_M / |q_k|_M
+    int iterations = 0;              // MBO iterations run
+    int linear_iterations = 0;       // CG iterations summed over all solves (direct: number of solves)
+    bool converged = false;          // stopped on the change test (not on max_iterations)
+    double seconds_init = 0;         // assembly + constraints + linear solve + projection, wall clock
+    double seconds_smooth = 0;       // MBO (+ relaxed step), wall clock
     std::string solver;              // which sparse solver ran
+    Eigen::VectorXd relaxed_norm;    // #V |q| of the relaxed field (empty unless relaxed_final_step)
 };
 
 FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const Constraints& constraints,

@@ -5,6 +5,7 @@
 #include <array>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace framefix {
 
@@ -22,9 +23,13 @@ SH9 sh_basis(const Eigen::Vector3d& s);         // Y_4m(s) for a unit vector s
 // The normal-aligned family (§1.3): q = c + P y with y in R^2, frames with one axis along n.
 struct NormalAligned {
     SH9 c;                                 // sqrt(7/12) B_n e4
-    Eigen::Matrix<double, 9, 2> P;         // [B_n e0, B_n e8]
+    Eigen::Matrix<double, 9, 2> P;         // [B_n e0, B_n e8], orthonormal columns
+    Eigen::Matrix3d R;                     // R_n: R_n e_z = n, B_n = D(R_n)
 };
 NormalAligned normal_aligned(const Eigen::Vector3d& n);
+// The rotation of the family member q = c + P y (y is rescaled to radius sqrt(5/12) first):
+// R_n rot_z(theta) with y = sqrt(5/12) (sin 4 theta, cos 4 theta). Axis 3 of the result is n.
+Eigen::Matrix3d normal_aligned_rotation(const NormalAligned& family, const Eigen::Vector2d& y);
 
 // Frame of a feature-curve vertex (§1.4): axis along t, the others the average modulo 90 deg
 // of the two face normals projected orthogonal to t.

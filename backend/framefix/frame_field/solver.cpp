@@ -1,0 +1,158 @@
+// solve_frame_field: linear initialisation + projection (§3.2), then MBO diffuse/project with the
+// section-0 schedule (§3.3), then the optional relaxed step.
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include <omp.h>
+
+#include "framefix/core/error.h"
+#include "framefix/frame_field/frame_field.h"
+#include "framefix/frame_field/linear_solver.h"
+#include "framefix/frame_field/projection.h"
+
+namespace framefix {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Per-vertex projection onto the frames allowed by the vertex's constraint. Free vertices: §2.2,
+// multi-start (top-5 of 48) when cold, warm start + best candidate in MBO (neighbouring iterates
+// are close; the extra candidate catches the rare vertex whose frame jumped). Normal-aligned:
+// rescale (a, b) to the circle of radius sqrt(5/12) (§1.3). Fixed: the constraint itself.
+void project_field(const ConstrainedSpace& s, FrameCoefficients& q, std::vector<Eigen::Matrix3d>& R, bool warm,
+                   int threads) {
+    ProjectionOptions cold;
+    cold.starts = 5;
+    ProjectionOptions hot;
+    hot.starts_with_warm = 1;
+    const int nv = s.vertices();
+    const double radius = std::sqrt(5.0 / 12.0);
+#pragma omp parallel for schedule(dynamic, 512) num_threads(threads)
+    for (int v = 0; v < nv; ++v) {
+        switch (s.kind[v]) {
+            case ConstraintKind::Free: {
+                const ProjectedFrame f = warm ? project_frame_from(q.row(v).transpose(), R[v], hot)
+                                              : project_frame(q.row(v).transpose(), cold);
+                R[v] = f.rotation;
+                q.row(v) = f.q.transpose();
+                break;
+            }
+            case ConstraintKind::NormalAligned: {
+                const NormalAligned& fam = s.families[s.family[v]];
+                Eigen::Vector2d y = fam.P.transpose() * q.row(v).transpose();
+                const double len = y.norm();
+                y = len > 1e-12 ? Eigen::Vector2d(radius * y / len) : Eigen::Vector2d(0, radius);
+                R[v] = normal_aligned_rotation(fam, y);
+                q.row(v) = (fam.c + fam.P * y).transpose();
+                break;
+            }
+            case ConstraintKind::Fixed:
+                R[v] = s.fixed_rotation[v];
+                q.row(v) = s.c.row(v);
+                break;
+        }
+    }
+}
+
+void check_input(const TetMesh& mesh, const TetTopology& topo, const Constraints& cons) {
+    const int nv = mesh.num_vertices();
+    if (nv == 0 || mesh.num_tets() == 0) throw Error("field", "the tet mesh is empty");
+    if (int(cons.kind.size()) != nv)
+        throw Error("field", "constraints have " + std::to_string(cons.kind.size()) + " vertices, the mesh " +
+                                 std::to_string(nv) + "; recompute boundary_constraints for this mesh");
+    if (int(topo.vert_tets_start.size()) != nv + 1)
+        throw Error("field", "the topology was built for another mesh; call build_topology(mesh) again");
+    bool any_constraint = false;
+    for (ConstraintKind k : cons.kind) any_constraint |= k != ConstraintKind::Free;
+    if (!any_constraint) throw Error("field", "no vertex is constrained; the field is undetermined");
+}
+
+}  // namespace
+
+FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const Constraints& constraints,
+                             const FieldOptions& o) {
+    check_input(mesh, topo, constraints);
+    const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+    const auto t_start = Clock::now();
+    report(o.progress, "field", 0.0);
+
+    const P1System sys = assemble_p1(mesh, topo, threads);
+    const ConstrainedSpace space = make_space(constraints);
+    ConstrainedSolver solver(sys, space, o.solver, threads);
+    const int nv = mesh.num_vertices();
+
+    FrameField out;
+    out.solver = solver.name();
+    out.kind = constraints.kind;
+
+    // Linear init: minimise E(c + x) over x in V, i.e. Pi K x = -Pi K c.
+    FrameCoefficients Kc;
+    apply_system(sys, 0.0, 1.0, space.c, Kc, threads);
+    FrameCoefficients x = FrameCoefficients::Zero(nv, 9);
+    const LinearSolveStats init = solver.solve(0.0, 1.0, -Kc, x, 1e-2 * o.cg_tolerance);
+    out.linear_iterations += init.iterations;
+    FrameCoefficients q = space.c + x;
+    std::vector<Eigen::Matrix3d> R(nv, Eigen::Matrix3d::Identity());
+    project_field(space, q, R, false, threads);
+    out.initial_energy = dirichlet_energy(sys, q, threads);
+    out.seconds_init = since(t_start);
+    report(o.progress, "field", 0.1);
+
+    // MBO. tau_k = max(tau_0 / k^p, h^2): the first steps smooth globally, the later ones at the
+    // mesh scale. Stop on the relative change only once tau sits at its floor (section 0).
+    const auto t_smooth = Clock::now();
+    const double lambda1 = std::pow(M_PI / sys.diameter, 2);
+    const double tau0 = o.tau_factor / lambda1, tau_floor = sys.mean_edge * sys.mean_edge;
+    FrameCoefficients rhs(nv, 9), Mq(nv, 9);
+    auto diffuse = [&](const FrameCoefficients& from, double tau) {
+        // (M + tau K)(c + x) = M from  =>  (M + tau K) x = M (from - c) - tau K c
+        x = from - space.c;
+        rhs = sys.mass.asDiagonal() * x - tau * Kc;
+        const LinearSolveStats st = solver.solve(1.0, tau, rhs, x, o.cg_tolerance);
+        out.linear_iterations += st.iterations;
+        return FrameCoefficients(space.c + x);
+    };
+    for (int k = 1; k <= o.max_iterations; ++k) {
+        const double tau = std::max(tau0 / std::pow(double(k), o.tau_power), tau_floor);
+        FrameCoefficients next = diffuse(q, tau);
+        project_field(space, next, R, true, threads);
+        const double change = mass_norm_diff(sys, next, q, threads) /
+                              std::max(1e-300, mass_norm_diff(sys, next, FrameCoefficients(), threads));
+        q.swap(next);
+        out.iterations = k;
+        out.change_history.push_back(change);
+        out.energy_history.push_back(dirichlet_energy(sys, q, threads));
+        report(o.progress, "field", 0.1 + 0.85 * double(k) / o.max_iterations);
+        if (tau <= tau_floor && change < o.tolerance) {
+            out.converged = true;
+            break;
+        }
+    }
+    out.energy = dirichlet_energy(sys, q, threads);
+
+    out.distance = Eigen::VectorXd::Zero(nv);
+    if (o.relaxed_final_step) {
+        // Ginzburg-Landau-like relaxation: |q| drops below 1 only near singular curves (§4.5).
+        const FrameCoefficients relaxed = diffuse(q, 2.0 * tau_floor);
+        out.relaxed_norm = relaxed.rowwise().norm();
+        FrameCoefficients projected = relaxed;
+        project_field(space, projected, R, true, threads);
+#pragma omp parallel for schedule(static) num_threads(threads)
+        for (int v = 0; v < nv; ++v) {
+            const double len = relaxed.row(v).norm();
+            out.distance(v) = len > 1e-12 ? (relaxed.row(v) / len - projected.row(v)).norm() : std::sqrt(2.0);
+        }
+        q = relaxed;
+    }
+    out.coefficients = std::move(q);
+    out.axes.resize(nv, 9);
+    for (int v = 0; v < nv; ++v)
+        for (int a = 0; a < 3; ++a) out.axes.block<1, 3>(v, 3 * a) = R[v].col(a).transpose();
+    out.seconds_smooth = since(t_smooth);
+    report(o.progress, "field", 1.0);
+    return out;
+}
+
+}  // namespace framefix
