@@ -1,0 +1,22 @@
+#pragma once
+// Which boundary vertices lose their tangency constraint (ALGORITHMS.md section 0, §7.4 item 7):
+// those within Euclidean distance r of a snapped path polyline. Without this the 45 deg path
+// frames and the normal-aligned frames next to them are incompatible and the solver keeps a
+// singular arc along the path (r = 0 fails in the prototype; 1..6 hb all work).
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framefix/mesh/types.h"
+
+namespace framefix {
+
+// Vertices of `candidates` within `radius` of any segment of any polyline (paths of vertex ids
+// into `points`; a one-vertex path is a point). Ascending, without duplicates.
+std::vector<int> vertices_near_paths(const Points& points, const std::vector<int>& candidates,
+                                     const std::vector<std::vector<int>>& paths, double radius);
+
+// Distance from p to segment [a, b].
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
+}  // namespace framefix
