@@ -23,9 +23,12 @@ def _error_html(text):
 
 
 class AnalyzePanel:
-    """Task panel of FrameFix_Analyze; `analysis` is a SingularCurves object to update."""
+    """Task panel of FrameFix_Analyze; `analysis_obj` is a SingularCurves object to update."""
+
+    active = None  # the open panel, for macros and GUI tests
 
     def __init__(self, source=None, analysis_obj=None, message=""):
+        AnalyzePanel.active = self
         self.source = source
         self.fixed_source = source is not None
         self.analysis = analysis_obj
@@ -37,6 +40,7 @@ class AnalyzePanel:
         self.job = self.digest = self.size_run = None
         self.last = None  # (source name, size) of the run the document shows
         self.close_on_success = False
+        self.closed = False  # the form is gone: slots must not touch widgets
         self.started = 0.0
         self._build()
         self._set_source(source)
@@ -45,9 +49,10 @@ class AnalyzePanel:
             self.last = (analysis_obj.Source.Name, analysis_obj.Size.Value)
         if message:
             self._show_error(message)
-        self.ticker = QtCore.QTimer()
+        self.ticker = QtCore.QTimer(self.form)  # dies with the form, however it is closed
         self.ticker.timeout.connect(self._tick)
         self.ticker.start(250)
+        self.form.destroyed.connect(lambda *_: self._on_form_destroyed())
 
     # -- widgets ---------------------------------------------------------------------------
     def _build(self):
@@ -62,11 +67,13 @@ class AnalyzePanel:
         grid.addWidget(QtWidgets.QLabel("Target size"), 0, 0)
         self.size = QtWidgets.QDoubleSpinBox()
         self.size.setDecimals(4)
-        self.size.setRange(1e-4, 1e6)
+        self.size.setRange(1e-4, 1e5)
+        self.size.setMinimumWidth(80)
         self.size.setToolTip("Target tet edge length, in model units")
         self.size.valueChanged.connect(self._update_estimate)
         grid.addWidget(self.size, 0, 1)
-        self.default_button = QtWidgets.QPushButton("Default")
+        self.default_button = QtWidgets.QToolButton()
+        self.default_button.setText("Default")
         self.default_button.setToolTip("The size giving about %d tets" % sizing.TARGET_TETS)
         self.default_button.clicked.connect(self._reset_size)
         grid.addWidget(self.default_button, 0, 2)
@@ -127,7 +134,7 @@ class AnalyzePanel:
             return
         tets = sizing.estimate_tets(self.volume, self.size.value())
         warn = " <b>(large: may take minutes)</b>" if tets > 2e6 else ""
-        self.estimate.setText("&asymp; {:,.0f} tets (estimate){}".format(tets, warn))
+        self.estimate.setText("\u2248 {:,.0f} tets (estimate){}".format(tets, warn))
 
     def _follow_selection(self):
         if self.fixed_source or self.runner.is_running():
@@ -166,6 +173,8 @@ class AnalyzePanel:
         return True
 
     def _on_progress(self, stage, fraction):
+        if self.closed:
+            return
         self.bar.setValue(int(1000 * fraction))
         self.stage.setText("Stage: %s" % stage)
 
@@ -187,19 +196,23 @@ class AnalyzePanel:
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (self.source.Label, text))
         self._log(text)
         self._show_summary(report)
+        FreeCADGui.Selection.clearSelection()  # the part's highlight would hide the curves
         if self.close_on_success:
             self._close()
             FreeCADGui.Control.closeDialog()
 
     def _on_failed(self, message):
         self._finish_job()
+        if self.closed:
+            return
         self.stage.setText("Failed")
         self.close_on_success = False
         self._show_error(message)
 
     def _finish_job(self):
         if self.job is not None:
-            self.elapsed.setText("Elapsed %.1f s" % (time.monotonic() - self.started))
+            if not self.closed:
+                self.elapsed.setText("Elapsed %.1f s" % (time.monotonic() - self.started))
             self.job.cleanup()
             self.job = None
 
@@ -246,6 +259,16 @@ class AnalyzePanel:
         self._close()
         return True
 
+    def _on_form_destroyed(self):
+        """Closed by closeDialog() or FreeCAD, not by OK/Cancel: stop a run, touch no widget."""
+        self.closed = True
+        self.runner.cancel()
+        if AnalyzePanel.active is self:
+            AnalyzePanel.active = None
+
     def _close(self):
-        self.ticker.stop()
+        if not self.closed:
+            self.ticker.stop()
         self.close_on_success = False
+        if AnalyzePanel.active is self:
+            AnalyzePanel.active = None

@@ -43,9 +43,10 @@ class ProcessRunner(QtCore.QObject):
         for key, value in job.env.items():
             env.insert(key, value)
         p.setProcessEnvironment(env)
-        p.readyReadStandardOutput.connect(self._on_output)
-        p.finished.connect(self._on_finished)
-        p.errorOccurred.connect(self._on_error)
+        # Each slot checks it is still about this process: a stopped one is ignored.
+        p.readyReadStandardOutput.connect(lambda: self._on_output(p))
+        p.finished.connect(lambda code, status: self._on_finished(p, code, status))
+        p.errorOccurred.connect(lambda error: self._on_error(p, error))
         if os.access(SETSID, os.X_OK):
             p.start(SETSID, job.argv)
         else:
@@ -75,8 +76,6 @@ class ProcessRunner(QtCore.QObject):
         self._drain()
         self.process = None  # from here on, the process' own signals are ignored
         self._timer.stop()
-        for sig in (p.readyReadStandardOutput, p.finished, p.errorOccurred):
-            sig.disconnect()
         self._kill(p)
         p.deleteLater()
         self.failed.emit(str(error))
@@ -95,26 +94,27 @@ class ProcessRunner(QtCore.QObject):
                 if fraction is not None:
                     self.progress.emit(progress[0], fraction)
 
-    def _on_output(self):
-        self._drain()
+    def _on_output(self, p):
+        if p is self.process:
+            self._drain()
 
     def _on_timeout(self):
         if self.process is not None:
             self._stop(self.job.timeout_error())
 
-    def _on_error(self, error):
-        if self.process is not None and error == QtCore.QProcess.FailedToStart:
+    def _on_error(self, p, error):
+        if p is self.process and error == QtCore.QProcess.FailedToStart:
             self._stop(BackendError("could not start the backend %s: %s"
                                     % (self.job.argv[0], self.process.errorString()), "start"))
 
-    def _on_finished(self, exit_code, exit_status):
-        if self.process is None:
+    def _on_finished(self, p, exit_code, exit_status):
+        if p is not self.process:
             return
         self._drain()
         if self._buffer:
             self._buffer += b"\n"
             self._drain()
-        p, self.process = self.process, None
+        self.process = None
         self._timer.stop()
         crashed = exit_status == QtCore.QProcess.CrashExit
         p.deleteLater()

@@ -1,0 +1,86 @@
+"""GUI: the Analyze panel with fake backends that crash, hang, print garbage or reject the
+input: FreeCAD stays up, the document is unchanged, the panel says what happened. Then the
+canned backend (GUI plumbing only, its curves are made up) creates the objects; undo removes
+them. Run by ctest through run_freecad.py --gui."""
+import os
+
+import FreeCAD
+import FreeCADGui
+import Part
+from PySide2 import QtWidgets
+
+import ffgui_harness
+
+FAKES = os.path.join(os.path.dirname(os.path.abspath(ffgui_harness.__file__)), "fake_backends")
+Apply, Ok = QtWidgets.QDialogButtonBox.Apply, QtWidgets.QDialogButtonBox.Ok
+
+
+def scenario(h):
+    from framefix_wb.shapes import shape_digest
+    from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
+    FreeCADGui.activateWorkbench("FrameFixWorkbench")
+    doc = FreeCAD.newDocument("CrashSafety")
+    doc.UndoMode = 1
+    part = doc.addObject("Part::Feature", "Part")
+    part.Shape = Part.makeBox(1, 1, 1).cut(Part.makeCylinder(0.5, 1, FreeCAD.Vector(1, 1, 0.5)))
+    doc.recompute()
+    FreeCADGui.SendMsgToActiveView("ViewFit")
+    names, digest = sorted(o.Name for o in doc.Objects), shape_digest(part.Shape)
+    yield 0.5
+
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.runCommand("FrameFix_Analyze")
+    yield 0.3
+    panel = AnalyzePanel.active
+    h.check(panel is not None and "select one solid" in panel.part_label.text(),
+            "no selection: the panel asks for one solid: %s" % (panel and panel.part_label.text()))
+    FreeCADGui.Control.closeDialog()
+    yield 0.2
+
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Analyze")
+    yield 0.3
+    panel = AnalyzePanel.active
+    h.check(panel.size.value() > 0 and "tets" in panel.estimate.text(),
+            "default size and estimate shown: %s" % panel.estimate.text())
+    os.environ["FRAMEFIX_TIMEOUT"] = "3"
+    for fake, expected in (("segv.sh", "crashed (killed by SIGSEGV)"),
+                           ("hang.sh", "did not finish within 3 s"),
+                           ("garbage.sh", "not valid JSON"),
+                           ("reject.sh", "2 solids; select one solid")):
+        os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, fake)
+        h.button(Apply).click()
+        yield h.until(lambda: not panel.runner.is_running(), 20, fake + " to end")
+        yield 0.2
+        text = panel.summary.text()
+        h.check(expected in text, "%s: the panel shows %r: %s" % (fake, expected, text))
+        h.check(sorted(o.Name for o in doc.Objects) == names, fake + ": document unchanged")
+        h.check(shape_digest(part.Shape) == digest, fake + ": part unchanged")
+    h.screenshot("crash_safety_error_panel")
+
+    os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, "canned.py")
+    os.environ["FAKE_BACKEND_DELAY"] = "0.1"
+    h.button(Apply).click()
+    yield 0.3
+    h.check(panel.runner.is_running(), "canned: running while the GUI stays responsive")
+    h.button(Apply).click()  # refused while running
+    yield h.until(lambda: not panel.runner.is_running(), 20, "canned run to end")
+    yield 0.3
+    h.show_all()
+    yield 0.5
+    curves = doc.getObject("SingularCurves")
+    h.check(curves is not None and curves.isValid(), "canned: analysis objects created")
+    h.check(len(doc.Objects) == len(names) + 4, "canned: exactly one analysis (Apply twice)")
+    h.check("3-5 curves" in panel.summary.text(), "canned: summary in the panel")
+    h.check(part.ViewObject.Transparency >= 50, "canned: part made semi-transparent")
+    h.check(len(curves.ViewObject.LineColorArray) == len(curves.Shape.Edges),
+            "canned: one colour per curve edge")
+    h.screenshot("crash_safety_canned_plumbing")
+    h.button(Ok).click()
+    yield h.until(lambda: AnalyzePanel.active is None, 10, "OK to close the panel")
+    doc.undo()
+    yield 0.2
+    h.check(sorted(o.Name for o in doc.Objects) == names, "undo removes the analysis")
+
+
+ffgui_harness.run(scenario)
