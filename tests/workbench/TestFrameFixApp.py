@@ -1,0 +1,77 @@
+"""Headless workbench and macro API on the real backend (run: freecadcmd -t TestFrameFixApp
+-M workbench -M tests/workbench with FRAMEFIX_BACKEND and FRAMEFIX_PYTHONPATH set, as ctest
+does). Oracle: the notch (box [0,1]^3 minus a vertical cylinder r=0.5 through (1,1)) has
+exactly one 3-5 curve, wherever it is placed."""
+import os
+import unittest
+
+import FreeCAD
+import Part
+
+from framefix_wb import analysis
+
+SAMPLES = os.environ.get("FRAMEFIX_SAMPLES") or os.path.join(
+    os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "samples")
+NOTCH = os.path.join(SAMPLES, "notch.step")
+
+
+def count_3_5(kinds):
+    return sum(1 for k in kinds if k == "3-5")
+
+
+class MacroApi(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        import framefix.freecad
+        cls.ff = framefix.freecad
+        cls.notch = Part.read(NOTCH)
+        cls.result = cls.ff.analyze(cls.notch)
+
+    def test_notch_has_exactly_one_3_5_curve(self):
+        self.assertEqual(self.result.summary["curves_3_5"], 1)
+
+    def test_curves_list_agrees_with_the_summary(self):
+        self.assertEqual(count_3_5(c.kind for c in self.result.curves), 1)
+
+    def test_notch_is_not_meshable(self):
+        self.assertFalse(self.result.meshable)
+
+    def test_curve_points_are_n_by_3_inside_the_box(self):
+        points = [c for c in self.result.curves if c.kind == "3-5"][0].points
+        self.assertEqual(points.shape[1], 3)
+        self.assertTrue(((points > -1e-6) & (points < 1 + 1e-6)).all())
+
+    def test_two_solids_raise_framefix_error(self):
+        import framefix
+        two = Part.makeCompound([Part.makeBox(1, 1, 1), Part.makeBox(1, 1, 1, FreeCAD.Vector(2, 0, 0))])
+        with self.assertRaises(framefix.Error):
+            self.ff.analyze(two)
+
+
+class Objects(unittest.TestCase):
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("FrameFixApp")
+        self.part = self.doc.addObject("Part::Feature", "Notch")
+        self.part.Shape = Part.read(NOTCH)
+        self.doc.recompute()
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def test_analysis_objects_show_one_3_5_curve(self):
+        curves = analysis.make_analysis(self.part)
+        self.assertEqual(curves.Curves35, 1)
+        self.assertIn(35, curves.EdgeKinds)
+
+    def test_moving_the_part_reruns_and_keeps_one_3_5_curve(self):
+        curves = analysis.make_analysis(self.part)
+        self.part.Placement.Base = FreeCAD.Vector(10, 0, 0)
+        self.doc.recompute()
+        self.assertTrue(curves.isValid())
+        self.assertEqual(curves.Curves35, 1)
+        self.assertGreater(curves.Shape.BoundBox.XMin, 9.0)
+
+    def test_nodes_and_feature_curves_recompute(self):
+        analysis.make_analysis(self.part)
+        for name in ("SingularNodes", "FeatureCurves"):
+            self.assertTrue(self.doc.getObject(name).isValid(), name)

@@ -1,0 +1,52 @@
+"""GUI with the real backend: select the notch, FrameFix_Analyze, Apply, wait; the analysis
+objects exist with one 3-5 curve; screenshot of the whole window (output/gui_analyze/)."""
+import os
+
+import FreeCAD
+import FreeCADGui
+import Part
+from PySide2 import QtWidgets
+
+import ffgui_harness
+
+SAMPLES = os.environ.get("FRAMEFIX_SAMPLES") or os.path.join(os.path.dirname(os.path.dirname(
+    os.path.dirname(os.path.abspath(ffgui_harness.__file__)))), "samples")
+
+
+def scenario(h):
+    from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
+    FreeCADGui.activateWorkbench("FrameFixWorkbench")
+    doc = FreeCAD.newDocument("Notch")
+    part = doc.addObject("Part::Feature", "Notch")
+    part.Shape = Part.read(os.path.join(SAMPLES, "notch.step"))
+    doc.recompute()
+    h.show_all()
+    yield 0.5
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Analyze")
+    yield 0.5
+    panel = AnalyzePanel.active
+    h.button(QtWidgets.QDialogButtonBox.Apply).click()
+    yield 1.0
+    h.screenshot("analyze_notch_running")
+    yield h.until(lambda: not panel.runner.is_running(), 600, "the backend to finish")
+    yield 0.5
+    curves = doc.getObject("SingularCurves")
+    h.check(curves is not None and curves.isValid(), "analysis objects exist: %s"
+            % panel.summary.text())
+    if curves is None:
+        return
+    for name in ("SingularNodes", "FeatureCurves"):
+        h.check(doc.getObject(name) is not None and doc.getObject(name).isValid(), name + " ok")
+    h.check(curves.Curves35 == 1, "the notch has exactly one 3-5 curve: %d" % curves.Curves35)
+    h.show_all()
+    yield 1.0
+    h.screenshot("analyze_notch")
+    h.button(QtWidgets.QDialogButtonBox.Ok).click()
+    yield h.until(lambda: AnalyzePanel.active is None, 10, "OK to close the panel")
+    FreeCADGui.Selection.clearSelection()
+    yield 0.5
+    h.screenshot("analyze_notch_closed")
+
+
+ffgui_harness.run(scenario, watchdog_s=800)
