@@ -6,6 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "framefix/core/error.h"
 #include "framefix/frame_field/frame_field.h"
 
