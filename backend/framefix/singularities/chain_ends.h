@@ -1,0 +1,58 @@
+#pragma once
+// Internal steps of trace_chains (chains.h), one file each: chains.cpp walks the singular faces,
+// chain_ends.cpp resolves where chains end and builds the nodes, curve_join.cpp joins curves
+// through pass-through nodes and numbers the result.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framefix/singularities/chains.h"
+#include "framefix/singularities/union_find.h"
+
+namespace framefix::detail {
+
+struct ChainContext {
+    const TetMesh& mesh;
+    const TetTopology& topo;
+    const std::vector<int>& val;  // #F face labels 0, 3, 5, -1
+    std::vector<int> ns;          // #T singular faces per tet
+    std::vector<int> cluster;     // #T junction cluster id, -1 for tets that are not node tets
+    int nclusters = 0;
+};
+
+enum class EndType { Junction, Boundary, Dead };
+
+struct RawEnd {
+    EndType type = EndType::Dead;
+    int face = -1;   // last singular face of the chain on this side
+    int tet = -1;    // tet beyond that face, -1 on the boundary
+    int group = -1;  // junction cluster / dead-end group / boundary group once resolved
+};
+
+struct RawChain {
+    std::vector<int> faces;  // chain order
+    bool closed = false;
+    RawEnd ends[2];          // unused when closed
+};
+
+Eigen::Vector3d face_centroid(const TetMesh& mesh, const TetTopology& topo, int f);
+Eigen::Vector3d tet_centroid(const TetMesh& mesh, int t);
+double mean_edge_length(const TetMesh& mesh, const TetTopology& topo);
+
+ChainContext classify_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& val);
+// Leave face f through `side`: true with the next face and the side it is entered from, or false
+// with the end reached.
+bool step(const ChainContext& c, int f, int side, int* next, int* next_side, RawEnd* end);
+std::vector<RawChain> walk_chains(const ChainContext& c);
+
+struct EndStats {
+    int dead_ends = 0, attached = 0;
+};
+// Dead ends -> junction / boundary / dead-end groups; boundary ends -> boundary groups.
+EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<RawChain>& chains);
+// Drops junk chains, creates one node per referenced group and the raw polylines.
+void assemble(const ChainContext& c, const std::vector<RawChain>& chains, ChainGraph& graph);
+int join_pass_through(ChainGraph& graph);
+void renumber(ChainGraph& graph);
+
+}  // namespace framefix::detail

@@ -1,0 +1,85 @@
+#include <algorithm>
+#include <utility>
+
+#include "framefix/core/error.h"
+#include "framefix/singularities/chain_ends.h"
+
+namespace framefix::detail {
+namespace {
+
+void reverse_curve(ChainCurve& c) {
+    const int np = int(c.points.size());
+    std::reverse(c.faces.begin(), c.faces.end());
+    std::reverse(c.points.begin(), c.points.end());
+    std::reverse(c.face_point.begin(), c.face_point.end());
+    for (int& p : c.face_point) p = np - 1 - p;
+    std::swap(c.ends[0], c.ends[1]);
+}
+
+// (curve, end) pairs meeting at each node; curves emptied by a join are skipped.
+std::vector<std::vector<std::pair<int, int>>> end_refs(const ChainGraph& g) {
+    std::vector<std::vector<std::pair<int, int>>> refs(g.nodes.size());
+    for (int i = 0; i < int(g.curves.size()); ++i) {
+        const ChainCurve& c = g.curves[i];
+        if (c.faces.empty() || c.closed) continue;
+        for (int k = 0; k < 2; ++k) refs[c.ends[k]].emplace_back(i, k);
+    }
+    return refs;
+}
+
+}  // namespace
+
+int join_pass_through(ChainGraph& g) {
+    int joined = 0;
+    for (;;) {
+        const auto refs = end_refs(g);
+        int node = -1;
+        for (int n = 0; n < int(g.nodes.size()) && node < 0; ++n)
+            if (!g.nodes[n].boundary && refs[n].size() == 2) node = n;
+        if (node < 0) return joined;
+        ++joined;
+        const auto [a, ea] = refs[node][0];
+        const auto [b, eb] = refs[node][1];
+        ChainCurve& A = g.curves[a];
+        // Interior node points are always in the raw polyline (assemble), so the node's point is
+        // the first/last point and appears once in the joined curve.
+        if (a == b) {
+            A.points.pop_back();
+            A.closed = true;
+            A.ends[0] = A.ends[1] = -1;
+            continue;
+        }
+        ChainCurve B = std::move(g.curves[b]);
+        g.curves[b] = ChainCurve{};  // emptied: removed by renumber
+        if (ea == 0) reverse_curve(A);
+        if (eb == 1) reverse_curve(B);
+        FF_ASSERT(A.ends[1] == node && B.ends[0] == node);
+        const int offset = int(A.points.size()) - 1;
+        A.faces.insert(A.faces.end(), B.faces.begin(), B.faces.end());
+        for (int p : B.face_point) A.face_point.push_back(p + offset);
+        A.points.insert(A.points.end(), B.points.begin() + 1, B.points.end());
+        A.ends[1] = B.ends[1];
+    }
+}
+
+void renumber(ChainGraph& g) {
+    std::vector<ChainCurve> curves;
+    for (ChainCurve& c : g.curves)
+        if (!c.faces.empty()) curves.push_back(std::move(c));
+    std::vector<int> id(g.nodes.size(), -1);
+    std::vector<ChainNode> nodes;
+    for (ChainCurve& c : curves) {
+        if (c.closed) continue;
+        for (int& e : c.ends) {
+            if (id[e] < 0) {
+                id[e] = int(nodes.size());
+                nodes.push_back(std::move(g.nodes[e]));
+            }
+            e = id[e];
+        }
+    }
+    g.curves = std::move(curves);
+    g.nodes = std::move(nodes);
+}
+
+}  // namespace framefix::detail

@@ -1,0 +1,130 @@
+#include "framefix/singularities/singularity_graph.h"
+
+#include <chrono>
+
+#include "framefix/core/error.h"
+#include "framefix/singularities/chains.h"
+#include "framefix/singularities/holonomy.h"
+#include "framefix/singularities/node_validity.h"
+#include "framefix/singularities/polyline.h"
+#include "framefix/singularities/three_five.h"
+
+namespace framefix {
+namespace {
+
+void check_options(const SingularityOptions& o) {
+    if (o.majority_window < 1)
+        throw Error("singularities", "majority_window is " + std::to_string(o.majority_window) + "; use 1 or more (5)");
+    if (o.smoothing_passes < 0)
+        throw Error("singularities", "smoothing_passes is " + std::to_string(o.smoothing_passes) + "; use 0 or more");
+    if (!(o.direct_match_deg >= 0 && o.direct_match_deg < 45))
+        throw Error("singularities", "direct_match_deg is " + std::to_string(o.direct_match_deg) +
+                                         "; use 0..25 degrees (matching is ambiguous at 45)");
+    if (!(o.attach_distance >= 0))
+        throw Error("singularities", "attach_distance must be >= 0 mean edge lengths (3)");
+}
+
+SingularCurve make_curve(const ChainCurve& c, const FaceHolonomy& h, const SingularityOptions& o) {
+    SingularCurve out;
+    out.faces = c.faces;
+    out.closed = c.closed;
+    out.ends[0] = c.ends[0];
+    out.ends[1] = c.ends[1];
+    std::vector<Eigen::Vector3d> axes;
+    for (int f : c.faces) {
+        out.valences.push_back(h.valence[f]);
+        axes.push_back(h.axis.row(f).transpose());
+    }
+    const LabelClass lc = classify_labels(out.valences, c.closed, o.majority_window);
+    out.kind = lc.kind;
+    out.end_valence[0] = lc.end_label[0];
+    out.end_valence[1] = lc.end_label[1];
+    if (lc.transition >= 0) out.transition = c.face_point[lc.transition];
+    out.stable_direction = mean_axis(axes);
+    out.points = smooth_polyline(c.points, c.closed, o.smoothing_passes);
+    out.length = polyline_length(out.points);
+    return out;
+}
+
+}  // namespace
+
+const char* to_string(CurveKind kind) {
+    switch (kind) {
+        case CurveKind::Valence3: return "valence3";
+        case CurveKind::Valence5: return "valence5";
+        case CurveKind::ThreeFive: return "3-5";
+        case CurveKind::Other: return "other";
+    }
+    return "other";
+}
+
+SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
+                                       const SingularityOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    check_options(options);
+    HolonomyOptions ho;
+    ho.direct_match_deg = options.direct_match_deg;
+    ho.threads = options.threads;
+    FaceHolonomy h = face_holonomy(mesh, topo, field, ho);
+    ChainOptions co;
+    co.attach_distance = options.attach_distance;
+    const ChainGraph chains = trace_chains(mesh, topo, h.valence, co);
+
+    SingularityGraph g;
+    g.h_mean = chains.h_mean;
+    g.subsampled_edges = h.subsampled_edges;
+    for (size_t i = 0; i < chains.curves.size(); ++i) {
+        g.curves.push_back(make_curve(chains.curves[i], h, options));
+        g.curves.back().id = int(i);
+    }
+
+    const std::vector<char> feature = feature_vertices(mesh);
+    for (size_t i = 0; i < chains.nodes.size(); ++i) {
+        const ChainNode& cn = chains.nodes[i];
+        SingularNode n;
+        n.id = int(i);
+        n.position = cn.position;
+        n.boundary = cn.boundary;
+        n.n_complex = cn.n_complex;
+        n.tets = cn.tets;
+        g.nodes.push_back(n);
+    }
+    // A curve passing through a node counts twice, a curve from a node back to it too (§5).
+    for (const SingularCurve& c : g.curves)
+        if (!c.closed)
+            for (int k = 0; k < 2; ++k) (c.end_valence[k] == 3 ? g.nodes[c.ends[k]].n3 : g.nodes[c.ends[k]].n5) += 1;
+    for (size_t i = 0; i < g.nodes.size(); ++i) {
+        SingularNode& n = g.nodes[i];
+        const ChainNode& cn = chains.nodes[i];
+        if (!n.boundary) {
+            n.valid = is_valid_interior_node(n.n3, n.n5);
+            continue;
+        }
+        bool on_feature = false;
+        for (int v : cn.verts) on_feature |= feature[v] != 0;
+        n.valid = on_feature || (is_valid_smooth_boundary_node(n.n3, n.n5) &&
+                                 axes_along_normals(mesh, topo, h.axis, cn.boundary_faces));
+    }
+
+    SingularitySummary& s = g.summary;
+    s.curves = int(g.curves.size());
+    for (const SingularCurve& c : g.curves) {
+        s.valence3 += c.kind == CurveKind::Valence3;
+        s.valence5 += c.kind == CurveKind::Valence5;
+        s.curves_3_5 += c.kind == CurveKind::ThreeFive;
+        s.mixed_loops += c.kind == CurveKind::Other;
+    }
+    s.nodes = int(g.nodes.size());
+    for (const SingularNode& n : g.nodes) s.invalid_nodes += !n.valid;
+    s.meshable = s.curves_3_5 == 0 && s.invalid_nodes == 0;
+    for (int v : h.valence) {
+        s.singular_faces += v != 0;
+        s.complex_faces += v == -1;
+    }
+    g.face_valence = std::move(h.valence);
+    g.face_axis = std::move(h.axis);
+    g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return g;
+}
+
+}  // namespace framefix
