@@ -98,6 +98,7 @@ std::vector<std::pair<int, SH9>> interpolate_split_curves(const Points& points, 
             for (int k = a->first; k <= b->first; ++k) {
                 const int v = ch[k];
                 if (!(cyclic || is_fixed(original, v) || anchors.count(v))) continue;
+                if (!anchors.count(v) && (k == a->first || k == b->first)) continue;  // keeps its own frame
                 const double w = (s[k] - s[a->first]) / span;
                 const ProjectedFrame f = project_frame((1 - w) * a->second + w * b->second);
                 // Anchors 45 deg apart can cancel at mid-span; then keep the nearer anchor.
