@@ -16,6 +16,15 @@ from framefix_wb.objects.properties import report_of
 FAKES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fake_backends")
 
 
+def alive(pid):
+    """True if `pid` runs (a zombie counts as gone)."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            return f.read().split(")")[-1].split()[0] != "Z"
+    except FileNotFoundError:
+        return False
+
+
 def use_backend(name):
     os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, name)
     os.environ.pop("FRAMEFIX_PYTHONPATH", None)
@@ -103,6 +112,19 @@ class FailingBackends(unittest.TestCase):
             self.run_fake("hang.sh", timeout=2.0)
         self.assertLess(time.monotonic() - start, 10.0)
 
+    def test_timeout_kills_what_the_backend_started(self):
+        pidfile = tempfile.NamedTemporaryFile(suffix=".pids", delete=False).name
+        os.environ["FAKE_BACKEND_PIDFILE"] = pidfile
+        try:
+            with self.assertRaises(BackendError):
+                self.run_fake("hang.sh", timeout=1.0)
+            with open(pidfile) as f:
+                pids = [int(p) for p in f.read().split()]
+        finally:
+            os.environ.pop("FAKE_BACKEND_PIDFILE")
+            os.unlink(pidfile)
+        self.assertEqual([p for p in pids if alive(p)], [])
+
     def test_garbage_report_is_refused(self):
         with self.assertRaisesRegex(BackendError, "not valid JSON"):
             self.run_fake("garbage.sh")
@@ -187,6 +209,15 @@ class Objects(unittest.TestCase):
         analysis.make_analysis(self.box, 0.5)
         self.doc.undo()
         self.assertEqual(sorted(o.Name for o in self.doc.Objects), names)
+
+    def test_redo_brings_it_back(self):
+        self.doc.UndoMode = 1
+        analysis.make_analysis(self.box, 0.5)
+        self.doc.undo()
+        self.doc.redo()
+        curves = self.doc.getObject("SingularCurves")
+        self.assertEqual(curves.Curves35, 1)
+        self.assertIs(self.doc.getObject("SingularNodes").Analysis, curves)
 
     def test_saved_document_reloads_without_rerun(self):
         analysis.make_analysis(self.box, 0.5)

@@ -3,6 +3,7 @@ input: FreeCAD stays up, the document is unchanged, the panel says what happened
 canned backend (GUI plumbing only, its curves are made up) creates the objects; undo removes
 them. Run by ctest through run_freecad.py --gui."""
 import os
+import tempfile
 
 import FreeCAD
 import FreeCADGui
@@ -13,6 +14,15 @@ import ffgui_harness
 
 FAKES = os.path.join(os.path.dirname(os.path.abspath(ffgui_harness.__file__)), "fake_backends")
 Apply, Ok = QtWidgets.QDialogButtonBox.Apply, QtWidgets.QDialogButtonBox.Ok
+Cancel = QtWidgets.QDialogButtonBox.Cancel
+
+
+def alive(pid):
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            return f.read().split(")")[-1].split()[0] != "Z"
+    except FileNotFoundError:
+        return False
 
 
 def scenario(h):
@@ -57,6 +67,23 @@ def scenario(h):
         h.check(sorted(o.Name for o in doc.Objects) == names, fake + ": document unchanged")
         h.check(shape_digest(part.Shape) == digest, fake + ": part unchanged")
     h.screenshot("crash_safety_error_panel")
+
+    pidfile = tempfile.NamedTemporaryFile(suffix=".pids", delete=False).name
+    os.environ.update(FRAMEFIX_BACKEND=os.path.join(FAKES, "hang.sh"), FRAMEFIX_TIMEOUT="60",
+                      FAKE_BACKEND_PIDFILE=pidfile)
+    h.button(Apply).click()
+    yield h.until(lambda: os.path.getsize(pidfile) > 0, 10, "hang.sh to start")
+    h.button(Cancel).click()
+    yield h.until(lambda: AnalyzePanel.active is None, 10, "Cancel to close the panel")
+    yield 0.5
+    with open(pidfile) as f:
+        pids = [int(p) for p in f.read().split()]
+    h.check(pids and not any(alive(p) for p in pids), "Cancel killed the backend: %s" % pids)
+    h.check(sorted(o.Name for o in doc.Objects) == names, "Cancel: document unchanged")
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Analyze")
+    yield 0.3
+    panel = AnalyzePanel.active
 
     os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, "canned.py")
     os.environ["FAKE_BACKEND_DELAY"] = "0.1"
