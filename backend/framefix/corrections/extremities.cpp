@@ -43,9 +43,12 @@ CurveEnds classify_curve_ends(const SingularityGraph& graph, double dead_end_rad
     ends.node_kind.resize(n_nodes);
     for (int n = 0; n < n_nodes; ++n) {
         ends.node_rep[n] = n;
-        ends.node_kind[n] = graph.nodes[n].boundary ? EndKind::Boundary
-                            : degree[n] >= 2      ? EndKind::Junction
-                                                  : EndKind::DeadEnd;
+        // A node with junction tets, or where several curves meet, is an interior node; a lone
+        // end without tets is a dead end (the extractor keeps those it could not attach).
+        const SingularNode& node = graph.nodes[n];
+        ends.node_kind[n] = node.boundary                             ? EndKind::Boundary
+                            : !node.tets.empty() || degree[n] >= 2 ? EndKind::Junction
+                                                                   : EndKind::DeadEnd;
     }
     // Ring curves often stop one tet short of their junction: such a dead end is that junction.
     for (int n = 0; n < n_nodes; ++n) {
