@@ -172,7 +172,7 @@ class Objects(unittest.TestCase):
         self.assertFalse(curves.Meshable)
 
     def test_nodes_mark_the_invalid_one(self):
-        curves = analysis.make_analysis(self.box, 0.5)
+        analysis.make_analysis(self.box, 0.5)
         nodes = self.doc.getObject("SingularNodes")
         self.assertEqual(list(nodes.NodeValid), [0, 1])
         self.assertEqual(len(nodes.Shape.Vertexes), 2)

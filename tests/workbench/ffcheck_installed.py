@@ -7,7 +7,6 @@ import traceback
 
 
 def _check():
-    import FreeCAD
     import Part
     from framefix_wb.backend import find_backend
     from framefix_wb.paths import icon

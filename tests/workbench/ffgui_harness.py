@@ -14,7 +14,6 @@ import sys
 import time
 import traceback
 
-import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtGui, QtWidgets
 

@@ -18,6 +18,14 @@ from ..report import summary_text
 from .process_runner import ProcessRunner
 
 
+def _alive(obj):
+    """False for None and for a document object deleted since."""
+    try:
+        return obj is not None and obj.Document is not None
+    except (ReferenceError, RuntimeError):
+        return False
+
+
 def _error_html(text):
     return '<span style="color:#c00000"><b>Error:</b> %s</span>' % html.escape(text)
 
@@ -160,7 +168,7 @@ class AnalyzePanel:
             self.size_run = self.size.value()
             self.digest = analysis.input_digest(solid, self.size_run)
             self.job = AnalysisJob(solid, self.size_run)
-        except FrameFixError as e:
+        except (FrameFixError, ReferenceError, RuntimeError, OSError) as e:
             self._show_error(str(e))
             return False
         self.fixed_source = True
@@ -181,13 +189,13 @@ class AnalyzePanel:
     def _on_succeeded(self, report):
         self._finish_job()
         try:
-            if self.analysis is not None and self.analysis.Document is not None:
+            if _alive(self.analysis):
                 analysis.update_analysis(self.analysis, self.size_run, report, self.digest)
             else:
                 self.analysis = analysis.make_analysis(self.source, self.size_run, report,
                                                        self.digest)
-        except (FrameFixError, RuntimeError) as e:
-            self._show_error(str(e))
+        except Exception as e:  # the adapter boundary: whatever went wrong goes to the panel
+            self._show_error("could not add the results: %s" % e)
             return
         self.last = (self.source.Name, self.size_run)
         self.bar.setValue(1000)
