@@ -143,6 +143,7 @@ def analyze(obj_or_shape, size=None, out=None, timeout=DEFAULT_TIMEOUT_S, progre
         brep = os.path.join(workdir, "shape.brep")
         solid.exportBrep(brep)
         out_dir = os.path.abspath(out) if out else os.path.join(workdir, "out")
+        os.makedirs(out_dir, exist_ok=True)
         prefix, env = backend_command()
         argv = prefix + ["analyze", brep, "--out", out_dir]
         if size:

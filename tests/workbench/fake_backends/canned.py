@@ -51,6 +51,7 @@ def main(argv):
                                   "points": [[0, 0, 1], [1, 0, 1]]}],
               "singularities": {"curves": curves, "nodes": nodes, "summary": summary},
               "timings_s": {"total": 0.1}, "peak_memory_mb": 1.0}
+    os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "report.json"), "w") as f:
         json.dump(report, f)
     return 0
