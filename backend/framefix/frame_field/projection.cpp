@@ -83,11 +83,11 @@ NewtonResult newton(const SH9& qn, const SH9 (&Lq)[3], Eigen::Matrix3d R, const 
     return {R, v, qn.dot(v)};
 }
 
-ProjectedFrame finish(const NewtonResult& best) {
+ProjectedFrame finish(const NewtonResult& best, const SH9& qn) {
     ProjectedFrame f;
     f.rotation = best.R;
     f.q = best.v;
-    f.distance = std::sqrt(std::max(0.0, 2.0 - 2.0 * best.dot));
+    f.distance = (qn - best.v).norm();  // not sqrt(2 - 2 dot): that loses half the digits near 0
     return f;
 }
 
@@ -142,7 +142,7 @@ ProjectedFrame project_frame_from(const SH9& q, const Eigen::Matrix3d* warm, con
             if (r.dot > best.dot + 1e-14) best = r;
         }
     }
-    return finish(best);
+    return finish(best, qn);
 }
 
 Eigen::Vector3d closest_direction(const Eigen::Vector3d& v, const Eigen::Matrix3d& R) {

@@ -2,6 +2,7 @@
 // against shared/reference/verify (sh4.py, zyz.py) by tests/backend/frame_field/test_sh.cpp.
 #include "framefix/frame_field/sh.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace framefix {
@@ -94,18 +95,23 @@ const Mat9& sh_rotation_x90() {
 }
 
 Mat9 sh_rotation(const Eigen::Matrix3d& R) {
-    // ZYZ angles without a gimbal-lock branch: with s = a + c and d = a - c,
-    //   R00 + R11 = (1 + cos b) cos s,  R10 - R01 = (1 + cos b) sin s,
-    //   R11 - R00 = (1 - cos b) cos d,  -(R10 + R01) = (1 - cos b) sin d,
-    // so s (resp. d) is undefined exactly when it does not matter (b = pi, resp. b = 0), and an
-    // error in it is scaled down by the same factor in D(R).
-    const double s = std::atan2(R(1, 0) - R(0, 1), R(0, 0) + R(1, 1));
-    const double d = std::atan2(-(R(1, 0) + R(0, 1)), R(1, 1) - R(0, 0));
+    // ZYZ angles of R = rot_z(a) rot_y(b) rot_z(c) without a gimbal-lock branch. With s = a + c,
+    // d = a - c the entries give each of s, d twice, at different scales:
+    //   R00 + R11 = (1 + cos b) cos s,   R10 - R01 = (1 + cos b) sin s,
+    //   R11 - R00 = (1 - cos b) cos d,   -(R10 + R01) = (1 - cos b) sin d,
+    //   (R02, R12) = sin b (cos a, sin a),   (-R20, R21) = sin b (cos c, sin c).
+    // Taking each from its larger-scale entries bounds the error of D(R) by a few ulps for every
+    // b, including b = 0 and b = pi where the Euler angles themselves are undefined.
+    const double cb = std::clamp(R(2, 2), -1.0, 1.0);
+    const double sb = std::hypot(R(0, 2), R(1, 2));
+    const double b = std::atan2(sb, cb);  // in [0, pi]
+    const double a_side = std::atan2(R(1, 2), R(0, 2)), c_side = std::atan2(R(2, 1), -R(2, 0));
+    const double s = 1 + cb >= sb ? std::atan2(R(1, 0) - R(0, 1), R(0, 0) + R(1, 1)) : a_side + c_side;
+    const double d = 1 - cb >= sb ? std::atan2(-(R(1, 0) + R(0, 1)), R(1, 1) - R(0, 0)) : a_side - c_side;
     const double a = 0.5 * (s + d), c = 0.5 * (s - d);
-    double b = std::atan2(std::hypot(R(0, 2), R(1, 2)), R(2, 2));
-    // (a, c) are known modulo (pi, pi), which flips the sign of b: R02 = cos a sin b, R12 = sin a sin b.
-    if (std::cos(a) * R(0, 2) + std::sin(a) * R(1, 2) < 0) b = -b;
-    return zyz(a, b, c);
+    // (a, c) from (s, d) are known modulo (pi, pi), which is rot_y(-b): R02 = cos a sin b, R12 = sin a sin b.
+    const double sign = std::cos(a) * R(0, 2) + std::sin(a) * R(1, 2) < 0 ? -1.0 : 1.0;
+    return zyz(a, sign * b, c);
 }
 
 SH9 sh_basis(const Eigen::Vector3d& p) {
