@@ -65,8 +65,9 @@ AnalysisResult mesh_part(const std::string& path, const AnalysisOptions& options
     report(options.progress, "load", 0.0);
     AnalysisResult r;
     if (kind == "msh" || kind == "mesh") {
-        r.mesh = read_tet_mesh(path);
-        r.features = crease_features(r.mesh);
+        CreaseFeatures cf = detect_crease_features(read_tet_mesh(path));
+        r.mesh = std::move(cf.mesh);
+        r.features = std::move(cf.features);
         r.topology = build_topology(r.mesh);
         r.input_path = path;
         r.input_kind = kind;

@@ -63,7 +63,7 @@ json singularities_json(const SingularityGraph& g) {
     return {{"curves", curves}, {"nodes", nodes}, {"summary", summary_json(g.summary)}};
 }
 
-json features_json(const AnalysisResult& r) {
+void add_features(json& j, const AnalysisResult& r) {
     const auto by = r.features.by_valence();
     json curves = json::array();
     for (const auto& pl : feature_polylines(r.mesh)) {
@@ -75,11 +75,10 @@ json features_json(const AnalysisResult& r) {
     for (const auto& e : r.features.edges)
         if (e.valence_varies)
             varying.push_back({{"edge", e.edge}, {"angle_min_deg", e.angle_min_deg}, {"angle_max_deg", e.angle_max_deg}});
-    return {{"features",
-             {{"curves", r.features.curves()},
-              {"by_valence", {{"1", by[1]}, {"2", by[2]}, {"3", by[3]}, {"4", by[4]}}},
-              {"valence_varies", varying}}},
-            {"feature_curves", curves}};
+    j["features"] = {{"curves", r.features.curves()},
+                     {"by_valence", {{"1", by[1]}, {"2", by[2]}, {"3", by[3]}, {"4", by[4]}}},
+                     {"valence_varies", varying}};
+    j["feature_curves"] = curves;
 }
 
 }  // namespace
@@ -89,7 +88,7 @@ std::string report_json(const AnalysisResult& r) {
     j["version"] = 1;
     j["input"] = {{"path", r.input_path}, {"kind", r.input_kind}};
     j["mesh"] = {{"vertices", r.mesh.num_vertices()}, {"tets", r.mesh.num_tets()}, {"size", r.mesh.size}};
-    for (auto& [k, v] : features_json(r).items()) j[k] = v;
+    add_features(j, r);
     if (r.has_field)
         j["field"] = {{"energy", r.field.energy},
                       {"initial_energy", r.field.initial_energy},
