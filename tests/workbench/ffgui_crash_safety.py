@@ -36,6 +36,7 @@ def scenario(h):
     doc.recompute()
     FreeCADGui.SendMsgToActiveView("ViewFit")
     names, digest = sorted(o.Name for o in doc.Objects), shape_digest(part.Shape)
+    transparency = part.ViewObject.Transparency
     yield 0.5
 
     FreeCADGui.Selection.clearSelection()
@@ -108,6 +109,8 @@ def scenario(h):
     doc.undo()
     yield 0.2
     h.check(sorted(o.Name for o in doc.Objects) == names, "undo removes the analysis")
+    h.check(part.ViewObject.Transparency == transparency,
+            "undo restores the part's transparency: %d" % part.ViewObject.Transparency)
 
 
 ffgui_harness.run(scenario)
