@@ -1,0 +1,60 @@
+// bench_field MESH.msh [threads] [cg|ldlt|cholmod] [max_iterations]
+// Reads a gmsh/Medit tet mesh, finds its crease features, solves the frame field, prints one
+// line of figures. Peer reference (Ray et al. initialisation alone, 2 cores, HexMe notch):
+// 59k tets 0.79 s, 233k tets 4.4 s, 1.07M tets 40 s.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "framefix/core/error.h"
+#include "framefix/core/memory.h"
+#include "framefix/frame_field/frame_field.h"
+#include "framefix/mesh/crease_features.h"
+#include "framefix/mesh/mesh_io.h"
+
+using namespace framefix;
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: bench_field MESH.msh [threads] [cg|ldlt|cholmod] [max_iterations]\n");
+        return 2;
+    }
+    try {
+        using Clock = std::chrono::steady_clock;
+        auto t0 = Clock::now();
+        auto seconds = [](Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); };
+        CreaseFeatures cf = detect_crease_features(read_tet_mesh(argv[1]));
+        const double t_load = seconds(t0);
+        auto t1 = Clock::now();
+        const TetTopology topo = build_topology(cf.mesh);
+        const Constraints cons = boundary_constraints(cf.mesh, topo, cf.features);
+        const double t_prep = seconds(t1);
+        FieldOptions o;
+        o.threads = argc > 2 ? std::atoi(argv[2]) : 0;
+        const std::string solver = argc > 3 ? argv[3] : "cg";
+        o.solver = solver == "ldlt" ? SparseSolver::SimplicialLDLT
+                   : solver == "cholmod" ? SparseSolver::Cholmod : SparseSolver::ConjugateGradient;
+        if (argc > 4) o.max_iterations = std::atoi(argv[4]);
+        const FrameField f = solve_frame_field(cf.mesh, topo, cons, o);
+        int fixed = 0, aligned = 0;
+        for (ConstraintKind k : cons.kind) {
+            fixed += k == ConstraintKind::Fixed;
+            aligned += k == ConstraintKind::NormalAligned;
+        }
+        std::printf("mesh %s\nvertices %d tets %d curves %d fixed %d aligned %d\n", argv[1], cf.mesh.num_vertices(),
+                    cf.mesh.num_tets(), cf.features.curves(), fixed, aligned);
+        std::printf("solver %s\n", f.solver.c_str());
+        std::printf("load %.3f s  topology+constraints %.3f s\n", t_load, t_prep);
+        std::printf("init %.3f s  smoothing %.3f s  total(init+smoothing) %.3f s\n", f.seconds_init, f.seconds_smooth,
+                    f.seconds_init + f.seconds_smooth);
+        std::printf("iterations %d converged %d linear_iterations %d\n", f.iterations, int(f.converged),
+                    f.linear_iterations);
+        std::printf("energy init %.6g final %.6g\n", f.initial_energy, f.energy);
+        std::printf("peak_memory_mb %.1f\n", peak_memory_mb());
+        return 0;
+    } catch (const Error& e) {
+        std::fprintf(stderr, "bench_field: error [%s]: %s\n", e.stage().c_str(), e.message().c_str());
+        return 2;
+    }
+}
