@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <Eigen/LU>
+
 #include "framefix/core/error.h"
 
 namespace framefix::cube {

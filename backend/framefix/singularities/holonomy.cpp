@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include <omp.h>
 
 #include "framefix/core/error.h"

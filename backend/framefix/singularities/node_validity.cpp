@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 namespace framefix {
 
 const std::array<std::array<int, 3>, 11>& hex_node_types() {
