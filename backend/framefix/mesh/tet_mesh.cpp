@@ -4,6 +4,8 @@
 #include <array>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 namespace framefix {
 
 double tet_volume(const TetMesh& mesh, int tet) {

@@ -15,4 +15,12 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options);
 double estimate_tets(double volume, double size);
 double estimate_memory_mb(double tets);
 
+// The size h giving about `tets` tets in this volume (inverse of estimate_tets).
+double size_for_tets(double volume, double tets);
+
+// Throws Error("mesh", "size 0.001 needs about 2.1e9 tets (~900 GB); use --size 0.02 or larger")
+// when meshing `volume` at `size` would need more than options.max_memory_mb (0 = 80% of
+// MemAvailable). Called by tessellate and tetrahedralize before any work.
+void check_memory(double volume, double size, const MeshOptions& options);
+
 }  // namespace framefix

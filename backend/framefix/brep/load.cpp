@@ -1,0 +1,198 @@
+// Loading STEP / IGES / BREP files and BREP strings into a BrepModel holding exactly one solid.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <BRepLib.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include "framefix/brep/occt_error.h"
+#include "framefix/brep/shape.h"
+
+namespace framefix {
+namespace {
+
+const char* kOneSolid = "export or select exactly one solid";
+
+int count(const TopoDS_Shape& shape, TopAbs_ShapeEnum what, TopAbs_ShapeEnum outside) {
+    int n = 0;
+    for (TopExp_Explorer it(shape, what, outside); it.More(); it.Next()) ++n;
+    return n;
+}
+
+std::string plural(int n, const std::string& word) {
+    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+// The one solid of `shape`, or a closed shell turned into a solid; anything else is refused.
+TopoDS_Solid single_solid(const TopoDS_Shape& shape, const std::string& source) {
+    if (shape.IsNull()) throw Error("load", source + " contains no shape; " + kOneSolid);
+    const int solids = count(shape, TopAbs_SOLID, TopAbs_SHAPE);
+    const int shells = count(shape, TopAbs_SHELL, TopAbs_SOLID);
+    const int faces = count(shape, TopAbs_FACE, TopAbs_SHELL);
+    const int edges = count(shape, TopAbs_EDGE, TopAbs_FACE);
+    if (solids > 1) throw Error("load", source + " contains " + plural(solids, "solid") + "; " + kOneSolid);
+    if (solids == 1) {
+        if (shells + faces + edges > 0)
+            throw Error("load", source + " contains 1 solid plus loose geometry (" + plural(shells, "shell") +
+                                    ", " + plural(faces, "face") + ", " + plural(edges, "edge") +
+                                    "); " + kOneSolid);
+        TopExp_Explorer it(shape, TopAbs_SOLID);
+        return TopoDS::Solid(it.Current());
+    }
+    if (shells == 1 && faces == 0 && edges == 0) {
+        TopExp_Explorer it(shape, TopAbs_SHELL);
+        const TopoDS_Shell shell = TopoDS::Shell(it.Current());
+        if (!BRep_Tool::IsClosed(shell))
+            throw Error("load", source + " contains an open shell, not a solid; close the shell or " +
+                                    "export the solid it bounds");
+        BRepBuilderAPI_MakeSolid make(shell);
+        if (!make.IsDone()) throw Error("load", source + " contains a closed shell that is not a solid");
+        TopoDS_Solid solid = make.Solid();
+        BRepLib::OrientClosedSolid(solid);
+        return solid;
+    }
+    if (shells + faces + edges == 0)
+        throw Error("load", source + " contains no solid (no geometry at all); " + kOneSolid);
+    throw Error("load", source + " contains no solid but " + plural(shells, "shell") + ", " +
+                            plural(faces, "face") + ", " + plural(edges, "edge") + "; " + kOneSolid);
+}
+
+std::string lower_extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+template <class Reader>
+TopoDS_Shape read_with(Reader& reader, const std::string& path, const char* format) {
+    const IFSelect_ReturnStatus status = reader.ReadFile(path.c_str());
+    if (status != IFSelect_RetDone)
+        throw Error("load", path + " is not a readable " + format + " file (truncated or not " + format +
+                                "); re-export it from the CAD system");
+    if (reader.TransferRoots() == 0)
+        throw Error("load", path + " holds no transferable " + format + " shape; re-export it");
+    return reader.OneShape();
+}
+
+TopoDS_Shape read_file(const std::string& path, const std::string& kind) {
+    if (kind == "step") {
+        STEPControl_Reader reader;
+        return read_with(reader, path, "STEP");
+    }
+    if (kind == "iges") {
+        IGESControl_Reader reader;
+        return read_with(reader, path, "IGES");
+    }
+    TopoDS_Shape shape;
+    BRep_Builder builder;
+    if (!BRepTools::Read(shape, path.c_str(), builder))
+        throw Error("load", path + " is not a readable BREP file (truncated or not BREP); re-export it");
+    return shape;
+}
+
+}  // namespace
+
+BrepModel make_model(const TopoDS_Shape& shape, const std::string& source, const std::string& path,
+                     const std::string& kind) {
+    return occt_call("load", source, [&] {
+        TopoDS_Solid solid = single_solid(shape, source);
+        BRepCheck_Analyzer check(solid);
+        if (!check.IsValid())
+            throw Error("load", source + " is not a valid solid (BRepCheck_Analyzer failed); repair it, " +
+                                    "e.g. with FreeCAD's Part > Check geometry and Refine shape");
+        GProp_GProps props;
+        BRepGProp::VolumeProperties(solid, props);
+        if (props.Mass() < 0) {  // inside out: a closed shell oriented inward
+            BRepLib::OrientClosedSolid(solid);
+            BRepGProp::VolumeProperties(solid, props);
+        }
+        if (!(props.Mass() > 0)) throw Error("load", source + " contains a solid of zero volume");
+
+        auto data = std::make_shared<BrepModel::Shape>();
+        data->solid = solid;
+        TopExp::MapShapes(solid, TopAbs_FACE, data->faces);
+        TopExp::MapShapes(solid, TopAbs_EDGE, data->edges);
+        TopExp::MapShapes(solid, TopAbs_VERTEX, data->vertices);
+
+        BrepModel model;
+        model.path = path;
+        model.kind = kind;
+        model.num_faces = data->faces.Extent();
+        model.num_edges = data->edges.Extent();
+        model.num_vertices = data->vertices.Extent();
+        model.volume = props.Mass();
+        Bnd_Box box;
+        BRepBndLib::Add(solid, box, false);
+        double x0, y0, z0, x1, y1, z1;
+        box.Get(x0, y0, z0, x1, y1, z1);
+        model.bbox_min = Eigen::Vector3d(x0, y0, z0);
+        model.bbox_max = Eigen::Vector3d(x1, y1, z1);
+        model.shape = std::move(data);
+        return model;
+    });
+}
+
+BrepModel load_shape(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        throw Error("load", path + " does not exist; check the path");
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error("load", path + " is not a regular file; give a .step, .brep or .iges file");
+    if (std::filesystem::file_size(path, ec) == 0)
+        throw Error("load", path + " is empty (0 bytes); re-export the part");
+    const std::string ext = lower_extension(path);
+    std::string kind;
+    if (ext == ".step" || ext == ".stp") kind = "step";
+    else if (ext == ".brep" || ext == ".brp") kind = "brep";
+    else if (ext == ".iges" || ext == ".igs") kind = "iges";
+    else
+        throw Error("load", path + " has unknown extension '" + ext +
+                                "'; give a .step/.stp, .brep or .iges/.igs file");
+    const TopoDS_Shape shape = occt_call("load", path, [&] { return read_file(path, kind); });
+    return make_model(shape, path, path, kind);
+}
+
+BrepModel load_brep_string(const std::string& brep_text) {
+    if (brep_text.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw Error("load", "BREP string is empty; pass shape.exportBrepToString() of a solid");
+    const TopoDS_Shape shape = occt_call("load", "BREP string", [&] {
+        std::istringstream in(brep_text);
+        TopoDS_Shape s;
+        BRep_Builder builder;
+        BRepTools::Read(s, in, builder);
+        if (s.IsNull())
+            throw Error("load", "BREP string is not readable BREP (truncated?); pass shape.exportBrepToString()");
+        return s;
+    });
+    return make_model(shape, "BREP string", "", "brep");
+}
+
+std::string to_brep_string(const BrepModel& model) {
+    FF_ASSERT(model.shape);
+    return occt_call("load", "writing BREP string", [&] {
+        std::ostringstream out;
+        BRepTools::Write(model.shape->solid, out);
+        return out.str();
+    });
+}
+
+}  // namespace framefix

@@ -1,0 +1,50 @@
+#pragma once
+// Longest-edge bisection of a face-tagged surface triangulation until no edge is longer than a
+// bound, with every new point put on the true geometry: on the B-rep edge curve for mesh edges
+// lying on a curve, on the face's surface otherwise. This turns OCCT's deflection-driven
+// triangulation (long slivers on planes and cylinders) into one of edge length ~h, which is what
+// lets TetGen mesh near-uniformly without refining around slivers.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace framefix {
+
+struct TaggedSurface {
+    struct Triangle {
+        std::array<int, 3> v;               // point indices, outward
+        std::array<Eigen::Vector2d, 3> uv;  // surface parameters of each corner on `face`
+        int face = 0;                       // B-rep face index, 1-based
+    };
+    struct CurveEdge {
+        int edge = 0;              // B-rep edge index, 1-based
+        double t_lo = 0, t_hi = 0; // curve parameter at the lower / higher point index
+    };
+    std::vector<Eigen::Vector3d> points;  // model units; B-rep vertices first
+    std::vector<Triangle> triangles;
+    std::unordered_map<std::uint64_t, CurveEdge> curve_edges;  // key edge_key(a, b): mesh edges on B-rep edges
+
+    static std::uint64_t edge_key(int a, int b) {
+        const std::uint64_t lo = std::uint64_t(a < b ? a : b), hi = std::uint64_t(a < b ? b : a);
+        return lo << 32 | hi;
+    }
+};
+
+struct SurfaceEvaluator {
+    std::function<Eigen::Vector3d(int face, const Eigen::Vector2d& uv)> on_face;
+    std::function<Eigen::Vector3d(int edge, double t)> on_edge;
+    // Outward unit normal of `face` at uv; zero where undefined (poles, apexes).
+    std::function<Eigen::Vector3d(int face, const Eigen::Vector2d& uv)> normal;
+    // Parameters on `face` of the point at parameter t of `edge`; near_uv picks the side of a seam.
+    std::function<Eigen::Vector2d(int edge, int face, double t, const Eigen::Vector2d& near_uv)> edge_uv;
+};
+
+// Splits edges longer than max_edge (model units), longest first, each split bisecting both
+// triangles of the edge. Stops after max_points new points (the caller sized the budget).
+void refine_surface(TaggedSurface& surface, const SurfaceEvaluator& eval, double max_edge, int max_points);
+
+}  // namespace framefix

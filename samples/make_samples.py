@@ -1,0 +1,122 @@
+"""Build FrameFix's sample parts (ALGORITHMS.md section 9) as STEP files, and the bad inputs
+the loader tests use.
+
+Run with the interpreter FreeCAD embeds, from anywhere:
+    /usr/bin/python3 samples/make_samples.py
+It writes samples/*.step and tests/data/* next to this script. The output is committed;
+rerun only to change a model.
+"""
+import os
+import sys
+
+sys.path.append('/usr/lib/freecad-python3/lib')
+import FreeCAD  # noqa: E402
+import Part  # noqa: E402
+
+V = FreeCAD.Vector
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.path.join(os.path.dirname(HERE), 'tests', 'data')
+
+
+def single_solid(shape, name):
+    solids = shape.Solids
+    if len(solids) != 1:
+        raise RuntimeError('%s: %d solids' % (name, len(solids)))
+    solid = solids[0]
+    if not solid.isValid():
+        raise RuntimeError('%s: invalid solid' % name)
+    return solid
+
+
+def imprint(solid, edges):
+    """The solid with `edges` (lying on its faces) imprinted: split faces, same geometry."""
+    pieces, _ = solid.generalFuse(edges)
+    return single_solid(pieces, 'imprint')
+
+
+def notch():
+    box = Part.makeBox(1, 1, 1)
+    pocket = Part.makeCylinder(0.5, 1, V(1, 1, 0.5), V(0, 0, 1))
+    return box.cut(pocket).removeSplitter()
+
+
+def box_arc():
+    box = Part.makeBox(1, 1, 0.5)
+    arc = Part.makeCircle(0.5, V(1, 1, 0.5), V(0, 0, 1), 180, 270)
+    return imprint(box, [arc])
+
+
+def box_arc_curved():
+    # Top face: a cylinder of radius 2 with a horizontal axis along x, 0.5 high in the middle.
+    box = Part.makeBox(1, 1, 1)
+    roof = Part.makeCylinder(2, 1, V(0, 0.5, -1.5), V(1, 0, 0))
+    part = box.common(roof).removeSplitter()
+    top = [f for f in part.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
+    cutter = Part.makeCylinder(0.5, 2, V(1, 1, -0.5), V(0, 0, 1))
+    lateral = [f for f in cutter.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
+    arc = top.section(lateral)
+    return imprint(part, arc.Edges)
+
+
+def half_sphere_box():
+    box = Part.makeBox(2, 2, 1, V(-1, -1, -1))
+    dome = Part.makeSphere(0.6, V(0, 0, 0), V(0, 0, 1), 0, 90)
+    return box.fuse(dome).removeSplitter()
+
+
+def groove():
+    box = Part.makeBox(1, 1, 1)
+    ring = Part.makeCylinder(0.6, 0.4, V(1, 1, 0.8)).cut(Part.makeCylinder(0.4, 0.4, V(1, 1, 0.8)))
+    return box.cut(ring).removeSplitter()
+
+
+def two_cylinders():
+    body = Part.makeCylinder(1, 4, V(-2, 0, 0), V(1, 0, 0))
+    boss = Part.makeCylinder(0.5, 2, V(0, 0, 0), V(0, 0, 1))
+    return body.fuse(boss).removeSplitter()
+
+
+def cube():
+    return Part.makeBox(1, 1, 1)
+
+
+def cylinder():
+    return Part.makeCylinder(0.5, 1)
+
+
+def l_prism():
+    pts = [V(0, 0, 0), V(1, 0, 0), V(1, 0.5, 0), V(0.5, 0.5, 0), V(0.5, 1, 0), V(0, 1, 0), V(0, 0, 0)]
+    return Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, 0.5))
+
+
+SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism]
+
+
+def write_bad_inputs():
+    os.makedirs(DATA, exist_ok=True)
+    two = Part.makeCompound([Part.makeBox(1, 1, 1), Part.makeBox(1, 1, 1, V(2, 0, 0))])
+    two.exportStep(os.path.join(DATA, 'two_solids.step'))
+    box = Part.makeBox(1, 1, 1)
+    Part.Shell(box.Faces[:5]).exportBrep(os.path.join(DATA, 'open_shell.brep'))
+    box.Faces[0].exportBrep(os.path.join(DATA, 'face.brep'))
+    with open(os.path.join(HERE, 'cube.step'), 'rb') as f:
+        text = f.read()
+    with open(os.path.join(DATA, 'truncated.step'), 'wb') as f:
+        f.write(text[:len(text) // 2])
+    with open(os.path.join(DATA, 'garbage.step'), 'w') as f:
+        f.write('this is not a STEP file\n' * 20)
+    open(os.path.join(DATA, 'empty.step'), 'w').close()
+
+
+def main():
+    for make in SAMPLES:
+        solid = single_solid(make(), make.__name__)
+        path = os.path.join(HERE, make.__name__ + '.step')
+        solid.exportStep(path)
+        print('%-16s faces %2d edges %2d volume %.5f' % (make.__name__, len(solid.Faces),
+                                                          len(solid.Edges), solid.Volume))
+    write_bad_inputs()
+
+
+if __name__ == '__main__':
+    main()
