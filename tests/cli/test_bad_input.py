@@ -5,7 +5,7 @@ from conftest import TESTDATA, SAMPLES, run
 
 CASES = [
     # (arguments, words the message must contain)
-    (["mesh", "/nonexistent/part.step"], ["part.step", "not found"]),
+    (["mesh", "/nonexistent/part.step"], ["part.step", "does not exist"]),
     (["mesh", TESTDATA / "empty.step"], ["empty.step", "empty"]),
     (["mesh", TESTDATA / "truncated.step"], ["truncated.step"]),
     (["mesh", TESTDATA / "garbage.step"], ["garbage.step"]),

@@ -51,7 +51,7 @@ def test_bad_files_raise_framefix_error(name, words):
 
 
 def test_missing_file_and_bad_brep_string_raise_framefix_error():
-    with pytest.raises(framefix.Error, match="not found"):
+    with pytest.raises(framefix.Error, match="does not exist"):
         framefix.load_shape("/nonexistent/x.step")
     with pytest.raises(framefix.Error):
         framefix.load_brep_string("this is not a BREP")

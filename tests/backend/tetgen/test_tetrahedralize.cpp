@@ -1,0 +1,143 @@
+// TetGen wrapper on PLCs built in code: a unit cube with tagged faces and feature edges.
+#include <set>
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "framefix/core/error.h"
+#include "framefix/tetgen/tetrahedralize.h"
+
+namespace framefix {
+namespace {
+
+// Unit cube [0,1]^3 + offset: 8 corners, 12 outward triangles (face tags 1..6), 12 edges tagged 1..12.
+SurfaceMesh cube(const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
+    SurfaceMesh s;
+    s.points.resize(8, 3);
+    for (int i = 0; i < 8; ++i) s.points.row(i) = Eigen::Vector3d(i & 1, (i >> 1) & 1, (i >> 2) & 1) + offset;
+    s.triangles.resize(12, 3);
+    s.triangles << 0, 2, 3, 0, 3, 1,  // z = 0
+        4, 5, 7, 4, 7, 6,             // z = 1
+        0, 1, 5, 0, 5, 4,             // y = 0
+        2, 6, 7, 2, 7, 3,             // y = 1
+        0, 4, 6, 0, 6, 2,             // x = 0
+        1, 3, 7, 1, 7, 5;             // x = 1
+    s.face_tags.resize(12);
+    for (int t = 0; t < 12; ++t) s.face_tags(t) = t / 2 + 1;
+    s.feature_segments.resize(12, 2);
+    s.feature_segments << 0, 1, 2, 3, 4, 5, 6, 7, 0, 2, 1, 3, 4, 6, 5, 7, 0, 4, 1, 5, 2, 6, 3, 7;
+    s.segment_tags = Eigen::VectorXi::LinSpaced(12, 1, 12);
+    s.corner_points = Eigen::VectorXi::LinSpaced(8, 0, 7);
+    return s;
+}
+
+MeshOptions sized(double h) {
+    MeshOptions o;
+    o.size = h;
+    return o;
+}
+
+TEST(Tetrahedralize, CubeTetsArePositiveAndFillTheCube) {
+    const TetMesh mesh = tetrahedralize(cube(), sized(0.2));
+    ASSERT_GT(mesh.num_tets(), 0);
+    double volume = 0;
+    for (int t = 0; t < mesh.num_tets(); ++t) {
+        EXPECT_GT(tet_volume(mesh, t), 0) << "tet " << t;
+        volume += tet_volume(mesh, t);
+    }
+    EXPECT_NEAR(volume, 1.0, 1e-12);
+    EXPECT_DOUBLE_EQ(mesh.size, 0.2);
+}
+
+TEST(Tetrahedralize, BoundaryKeepsTagsAndPointsOutward) {
+    const TetMesh mesh = tetrahedralize(cube(), sized(0.3));
+    ASSERT_EQ(mesh.boundary_faces.rows(), 12);  // -Y: the input surface is kept as is
+    const Eigen::Vector3d centre(0.5, 0.5, 0.5);
+    for (int f = 0; f < 12; ++f) {
+        const Eigen::Vector3d a = mesh.points.row(mesh.boundary_faces(f, 0)), b = mesh.points.row(mesh.boundary_faces(f, 1)),
+                              c = mesh.points.row(mesh.boundary_faces(f, 2));
+        const Eigen::Vector3d n = (b - a).cross(c - a);
+        EXPECT_GT(n.dot((a + b + c) / 3 - centre), 0) << "face " << f;
+        const int tag = mesh.face_tags(f);
+        const int axis = (tag - 1) / 2;  // tags 1,2: z; 3,4: y; 5,6: x
+        EXPECT_NEAR(std::abs(n.normalized()(2 - axis)), 1.0, 1e-12) << "face " << f << " tag " << tag;
+    }
+}
+
+TEST(Tetrahedralize, FeatureEdgesAndCornersKept) {
+    const SurfaceMesh s = cube();
+    const TetMesh mesh = tetrahedralize(s, sized(0.3));
+    ASSERT_EQ(mesh.feature_edges.rows(), 12);
+    std::set<int> tags;
+    for (int e = 0; e < 12; ++e) {
+        tags.insert(mesh.edge_tags(e));
+        const int i = mesh.edge_tags(e) - 1;
+        const std::set<int> got = {mesh.feature_edges(e, 0), mesh.feature_edges(e, 1)};
+        const std::set<int> want = {s.feature_segments(i, 0), s.feature_segments(i, 1)};
+        EXPECT_EQ(got, want) << "Edge" << i + 1;
+    }
+    EXPECT_EQ(tags.size(), 12u);
+    ASSERT_EQ(mesh.corner_vertices.rows(), 8);
+    for (int c = 0; c < 8; ++c) EXPECT_EQ(mesh.points.row(mesh.corner_vertices(c)), s.points.row(c));
+}
+
+TEST(Tetrahedralize, DefaultSizeFromTargetTets) {
+    MeshOptions o;
+    o.target_tets = 2000;
+    const TetMesh mesh = tetrahedralize(cube(), o);
+    EXPECT_NEAR(mesh.size, size_for_tets(1.0, 2000), 1e-12);
+}
+
+TEST(Tetrahedralize, RefusesSizesBeyondMemory) {
+    MeshOptions o = sized(0.001);
+    o.max_memory_mb = 1000;
+    try {
+        tetrahedralize(cube(), o);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.stage(), "mesh");
+        EXPECT_NE(e.message().find("size 0.001 needs about 1.2e+10 tets (~11518 GB, limit 1000 MB)"), std::string::npos) << e.what();
+        EXPECT_NE(e.message().find("use --size 0.024 or larger"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Tetrahedralize, SuggestedSizeIsAccepted) {
+    MeshOptions o = sized(0.024);
+    o.max_memory_mb = 1000;
+    EXPECT_NO_THROW(check_memory(1.0, o.size, o));
+}
+
+TEST(Tetrahedralize, OpenSurfaceIsRefused) {
+    SurfaceMesh s = cube();
+    s.triangles.conservativeResize(10, 3);  // drop the x = 1 side
+    s.face_tags.conservativeResize(10);
+    EXPECT_THROW(tetrahedralize(s, sized(0.3)), Error);
+}
+
+TEST(Tetrahedralize, SelfIntersectingSurfaceIsReported) {
+    // Two overlapping cubes given as one surface.
+    const SurfaceMesh a = cube(), b = cube(Eigen::Vector3d(0.5, 0.3, 0.2));
+    SurfaceMesh s;
+    s.points.resize(16, 3);
+    s.points << a.points, b.points;
+    s.triangles.resize(24, 3);
+    s.triangles << a.triangles, (b.triangles.array() + 8).matrix();
+    s.face_tags.resize(24);
+    s.face_tags << a.face_tags, b.face_tags;
+    s.corner_points = Eigen::VectorXi::LinSpaced(16, 0, 15);
+    try {
+        tetrahedralize(s, sized(0.3));
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.stage(), "mesh");
+        EXPECT_NE(e.message().find("self-intersects"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SizeModel, EstimateAndInverseAgree) {
+    EXPECT_NEAR(estimate_tets(2.0, size_for_tets(2.0, 12345)), 12345, 1e-6);
+    EXPECT_GT(estimate_memory_mb(1e6), estimate_memory_mb(1e5));
+}
+
+}  // namespace
+}  // namespace framefix
