@@ -27,7 +27,8 @@ struct SingularCurve {
     CurveKind kind = CurveKind::Valence3;
     std::vector<int> faces;              // singular triangles in chain order (topology face ids)
     std::vector<int> valences;           // per face: 3, 5 (raw label)
-    Points points;                       // smoothed polyline for display, model units
+    Points points;                       // smoothed polyline for display, model units: end node,
+                                         // triangle centroids, end node (closed: repeats point 0 last)
     Eigen::Vector3d stable_direction = Eigen::Vector3d::Zero();  // mean holonomy axis
     int ends[2] = {-1, -1};              // node ids; -1 for a closed loop
     bool closed = false;
@@ -43,7 +44,7 @@ struct SingularNode {
     int n3 = 0, n5 = 0;                  // valence-3 / valence-5 curves meeting here
     int n_complex = 0;                   // complex triangles absorbed
     bool valid = true;                   // interior: table of hex-meshable nodes; boundary: rule
-    std::vector<int> tets;               // junction tets clustered into this node
+    std::vector<int> tets;               // junction tets clustered into this node (empty on the boundary)
 };
 
 struct SingularitySummary {
