@@ -49,29 +49,47 @@ class MacroApi(unittest.TestCase):
 
 
 class Objects(unittest.TestCase):
-    def setUp(self):
-        self.doc = FreeCAD.newDocument("FrameFixApp")
-        self.part = self.doc.addObject("Part::Feature", "Notch")
-        self.part.Shape = Part.read(NOTCH)
-        self.doc.recompute()
+    """One analysis of the notch at the workbench's default size."""
 
-    def tearDown(self):
-        FreeCAD.closeDocument(self.doc.Name)
+    @classmethod
+    def setUpClass(cls):
+        cls.doc = FreeCAD.newDocument("FrameFixApp")
+        cls.part = cls.doc.addObject("Part::Feature", "Notch")
+        cls.part.Shape = Part.read(NOTCH)
+        cls.doc.recompute()
+        cls.curves = analysis.make_analysis(cls.part)
 
-    def test_analysis_objects_show_one_3_5_curve(self):
-        curves = analysis.make_analysis(self.part)
-        self.assertEqual(curves.Curves35, 1)
-        self.assertIn(35, curves.EdgeKinds)
+    @classmethod
+    def tearDownClass(cls):
+        FreeCAD.closeDocument(cls.doc.Name)
 
-    def test_moving_the_part_reruns_and_keeps_one_3_5_curve(self):
-        curves = analysis.make_analysis(self.part)
-        self.part.Placement.Base = FreeCAD.Vector(10, 0, 0)
-        self.doc.recompute()
-        self.assertTrue(curves.isValid())
-        self.assertEqual(curves.Curves35, 1)
-        self.assertGreater(curves.Shape.BoundBox.XMin, 9.0)
+    def test_analysis_shows_one_3_5_curve(self):
+        self.assertEqual(self.curves.Curves35, 1)
 
-    def test_nodes_and_feature_curves_recompute(self):
-        analysis.make_analysis(self.part)
+    def test_the_3_5_curve_has_its_colour_code(self):
+        self.assertIn(35, self.curves.EdgeKinds)
+
+    def test_nodes_and_feature_curves_are_valid(self):
         for name in ("SingularNodes", "FeatureCurves"):
             self.assertTrue(self.doc.getObject(name).isValid(), name)
+
+    def test_feature_curves_cover_the_parts_edges(self):
+        features = self.doc.getObject("FeatureCurves")
+        self.assertGreater(len(features.EdgeValences), 0)
+
+
+class MovedPart(unittest.TestCase):
+    def test_moving_the_part_reruns_and_keeps_one_3_5_curve(self):
+        doc = FreeCAD.newDocument("FrameFixMoved")
+        try:
+            part = doc.addObject("Part::Feature", "Notch")
+            part.Shape = Part.read(NOTCH)
+            doc.recompute()
+            curves = analysis.make_analysis(part)
+            part.Placement.Base = FreeCAD.Vector(10, 0, 0)
+            doc.recompute()
+            self.assertTrue(curves.isValid())
+            self.assertEqual(curves.Curves35, 1)
+            self.assertGreater(curves.Shape.BoundBox.XMin, 9.0)
+        finally:
+            FreeCAD.closeDocument(doc.Name)

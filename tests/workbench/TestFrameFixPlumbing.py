@@ -44,6 +44,13 @@ class Pure(unittest.TestCase):
         with self.assertRaisesRegex(BackendError, "summary"):
             report.check_report({"version": 1, "singularities": {"curves": []}})
 
+    def test_unknown_curve_kind_is_kept_and_counted_as_other(self):
+        summary = dict(dict.fromkeys(report.SUMMARY_KEYS, 0), curves=2, valence5=1)
+        r = report.check_report({"version": 1, "singularities": {"summary": summary, "curves": [
+            {"kind": "valence5", "points": []}, {"kind": "other", "points": []}]}})
+        self.assertEqual([c["kind"] for c in r["curves"]], ["valence5", "other"])
+        self.assertEqual(report.curve_breakdown(r["summary"]), "1 valence 5, 1 other")
+
     def test_report_with_bad_point_is_rejected(self):
         bad = {"version": 1, "singularities": {
             "summary": dict.fromkeys(report.SUMMARY_KEYS, 0),

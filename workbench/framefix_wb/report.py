@@ -9,7 +9,7 @@ import math
 
 from .errors import BackendError
 
-CURVE_KINDS = ("valence3", "valence5", "3-5")
+CURVE_KINDS = ("valence3", "valence5", "3-5")  # others (a newer backend's) are shown as "other"
 SUMMARY_KEYS = ("curves", "valence3", "valence5", "curves_3_5", "nodes", "invalid_nodes")
 
 
@@ -31,8 +31,8 @@ def _points(value, where):
 
 def _curve(c, i):
     where = "singularities.curves[%d]" % i
-    if not isinstance(c, dict) or c.get("kind") not in CURVE_KINDS:
-        _fail("%s.kind is not one of %s" % (where, ", ".join(CURVE_KINDS)))
+    if not isinstance(c, dict) or not isinstance(c.get("kind"), str):
+        _fail("%s.kind is not a string" % where)
     return {"id": int(c.get("id", i)), "kind": c["kind"], "length": float(c.get("length", 0.0)),
             "ends": list(c.get("ends", [])), "points": _points(c.get("points"), where)}
 
@@ -88,13 +88,23 @@ def load_report(path):
     return check_report(data)
 
 
+def curve_breakdown(summary):
+    """'1 valence 5, 1 3-5, 3 other': the curves by kind, kinds the summary does not name
+    (a backend may add some) counted as other."""
+    named = (("valence3", "valence 3"), ("valence5", "valence 5"), ("curves_3_5", "3-5"))
+    parts = ["%d %s" % (summary[k], text) for k, text in named if summary[k]]
+    other = summary["curves"] - sum(summary[k] for k, _ in named)
+    if other > 0:
+        parts.append("%d other" % other)
+    return ", ".join(parts) or "none"
+
+
 def summary_text(summary, mesh=None):
-    """One line for the console: '1 3-5 curve, 4 singular curves (...) - NOT hex-meshable'."""
+    """One line for the console: '1 3-5 curves, 5 singular curves (...): NOT hex-meshable'."""
     verdict = "hex-meshable" if summary["meshable"] else "NOT hex-meshable"
-    text = ("%d singular curves (%d valence 3, %d valence 5, %d 3-5 curves), "
-            "%d nodes (%d invalid): %s" % (
-                summary["curves"], summary["valence3"], summary["valence5"],
-                summary["curves_3_5"], summary["nodes"], summary["invalid_nodes"], verdict))
+    text = ("%d 3-5 curves, %d singular curves (%s), %d nodes (%d invalid): %s" % (
+        summary["curves_3_5"], summary["curves"], curve_breakdown(summary), summary["nodes"],
+        summary["invalid_nodes"], verdict))
     if mesh and mesh.get("tets"):
         text += "; mesh %s tets, size %.4g" % (mesh.get("tets"), float(mesh.get("size", 0)))
     return text

@@ -1,11 +1,14 @@
 """Colours and line styles of the results; the panel's legend reads the same table."""
 
-# kind code stored per edge (EdgeKinds) -> (RGB, legend text)
+# kind code stored per edge (EdgeKinds) -> (RGB, legend text); 0: a kind this workbench
+# does not know (the backend may add kinds, e.g. "other")
 CURVE_KIND_CODES = {"valence3": 3, "valence5": 5, "3-5": 35}
+OTHER_KIND = 0
 CURVE_COLORS = {
     3: ((0.10, 0.45, 1.00), "valence 3"),
     5: ((0.00, 0.70, 0.25), "valence 5"),
     35: ((1.00, 0.00, 0.00), "3-5 curve (not hex-meshable)"),
+    OTHER_KIND: ((0.45, 0.45, 0.45), "other"),
 }
 NODE_COLORS = {True: ((0.15, 0.15, 0.15), "node"), False: ((1.00, 0.00, 1.00), "invalid node")}
 # feature curve hex valence 1..4 (dihedral angle 90, 180, 270, 360 degrees)

@@ -31,7 +31,7 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyString", "Report", "FrameFix", "report.json of the last run", HIDDEN)
         add(obj, "App::PropertyString", "InputDigest", "FrameFix", "solid and size of that run", HIDDEN)
         add(obj, "App::PropertyIntegerList", "EdgeKinds", "FrameFix",
-            "per edge: 3 valence 3, 5 valence 5, 35 3-5 curve", HIDDEN)
+            "per edge: 3 valence 3, 5 valence 5, 35 3-5 curve, 0 other", HIDDEN)
         add(obj, "App::PropertyIntegerList", "EdgeCurves", "FrameFix", "per edge: curve id", HIDDEN)
         add(obj, "App::PropertyInteger", "SourceTransparency", "FrameFix",
             "source's transparency before the analysis (-1: untouched)", HIDDEN, -1)
@@ -57,7 +57,7 @@ class SingularCurves(ProxyBase):
                 obj.Source.Label, summary_text(report["summary"], report["mesh"])))
         report = report_of(obj)
         shape, codes, owners = geometry.polylines(
-            report["curves"], lambda c: style.CURVE_KIND_CODES[c["kind"]])
+            report["curves"], lambda c: style.CURVE_KIND_CODES.get(c["kind"], style.OTHER_KIND))
         obj.Shape = shape
         obj.EdgeCurves = [report["curves"][i]["id"] for i in owners]
         obj.EdgeKinds = codes  # after Shape: the view provider colours edges on this change

@@ -14,7 +14,7 @@ from PySide2 import QtCore, QtGui, QtWidgets
 from .. import analysis, paths, shapes, sizing, style
 from ..errors import FrameFixError
 from ..job import AnalysisJob
-from ..report import summary_text
+from ..report import curve_breakdown, summary_text
 from .process_runner import ProcessRunner
 
 
@@ -183,7 +183,7 @@ class AnalyzePanel:
     def _on_progress(self, stage, fraction):
         if self.closed:
             return
-        self.bar.setValue(int(1000 * fraction))
+        self.bar.setValue(max(self.bar.value(), int(1000 * fraction)))  # never backwards
         self.stage.setText("Stage: %s" % stage)
 
     def _on_succeeded(self, report):
@@ -233,11 +233,13 @@ class AnalyzePanel:
         s = report["summary"]
         verdict = ('<b style="color:#008000">hex-meshable</b>' if s["meshable"] else
                    '<b style="color:#c00000">not hex-meshable</b>')
+        kinds = {style.CURVE_KIND_CODES.get(c["kind"], style.OTHER_KIND)
+                 for c in report["curves"]} | {3, 5, 35}
         self.summary.setText(
-            "%s: %d singular curves (%d valence 3, %d valence 5), <b>%d 3-5 curves</b>, "
-            "%d nodes (%d invalid)<br>%s<br>%s" % (
-                verdict, s["curves"], s["valence3"], s["valence5"], s["curves_3_5"], s["nodes"],
-                s["invalid_nodes"], style.legend_html(style.CURVE_COLORS),
+            "%s: <b>%d 3-5 curves</b>, %d singular curves in all (%s), %d nodes (%d invalid)"
+            "<br>%s<br>%s" % (
+                verdict, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],
+                s["invalid_nodes"], style.legend_html(style.CURVE_COLORS, kinds),
                 style.legend_html(style.NODE_COLORS)))
 
     def _log(self, text):
