@@ -10,7 +10,7 @@ import json
 
 import FreeCAD
 
-from . import shapes, sizing, style
+from . import shapes, style
 from .errors import FrameFixError
 from .job import AnalysisJob
 from .runner import run_sync
@@ -19,7 +19,8 @@ GROUP_LABEL = "FrameFix analysis of %s"
 
 
 def input_digest(solid, size):
-    return "%s size=%r" % (shapes.shape_digest(solid), float(size))
+    """What a run depends on: the solid's geometry and the size (None: the backend's default)."""
+    return "%s size=%r" % (shapes.shape_digest(solid), float(size or 0.0))
 
 
 def _gui_idle():
@@ -30,7 +31,8 @@ def _gui_idle():
 
 
 def run_analysis(solid, size, backend=None, timeout=None):
-    """The checked report of the backend on `solid`; raises BackendError."""
+    """The checked report of the backend on `solid`; size None lets the backend choose
+    (about sizing.TARGET_TETS tets). Raises BackendError."""
     job = AnalysisJob(solid, size, backend, timeout)
     try:
         return run_sync(job, on_idle=_gui_idle)
@@ -83,16 +85,17 @@ class _Transaction:
 def make_analysis(source, size=None, report=None, digest=None, backend=None):
     """Add the analysis group of `source` (a part, Body or Link); returns SingularCurves.
 
-    Without `report` the backend runs first (synchronously). With it, `digest` must be
-    input_digest() of the solid and size that report was computed from.
+    `size` None (stored as Size 0) lets the backend pick it. Without `report` the backend
+    runs first (synchronously). With it, `digest` must be input_digest() of the solid and
+    size that report was computed from.
     """
     from .objects.feature_curves import FeatureCurves
     from .objects.singular_curves import SingularCurves
     from .objects.singular_nodes import SingularNodes
     solid = shapes.solid_of(source)
-    size = float(size or sizing.default_size(abs(solid.Volume)))
+    size = float(size or 0.0)
     if report is None:
-        report, digest = run_analysis(solid, size, backend), input_digest(solid, size)
+        report, digest = run_analysis(solid, size or None, backend), input_digest(solid, size)
     doc = source.Document
     with _Transaction(doc, "FrameFix analysis"):
         group = doc.addObject("App::DocumentObjectGroup", "FrameFixAnalysis")
@@ -116,7 +119,7 @@ def update_analysis(curves, size, report, digest):
     """Store a new run (from the task panel) on an existing analysis and recompute it."""
     doc = curves.Document
     with _Transaction(doc, "FrameFix analysis"):
-        curves.Size = float(size)
+        curves.Size = float(size or 0.0)
         curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
         _fade_source(curves, curves.Source)
         _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])

@@ -27,7 +27,8 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyLink", "Source", "FrameFix",
             "The analysed solid; editing it marks this analysis for recompute")
         add(obj, "App::PropertyLength", "Size", "FrameFix",
-            "Target tet edge length (model units); 0 = about %d tets" % sizing.TARGET_TETS)
+            "Target tet edge length (model units); 0: the backend's default, about %d tets"
+            % sizing.TARGET_TETS)
         add(obj, "App::PropertyString", "Report", "FrameFix", "report.json of the last run", HIDDEN)
         add(obj, "App::PropertyString", "InputDigest", "FrameFix", "solid and size of that run", HIDDEN)
         add(obj, "App::PropertyIntegerList", "EdgeKinds", "FrameFix",
@@ -40,6 +41,8 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyBool", "Meshable", "Summary",
             "No 3-5 curve and no invalid node", READ_ONLY)
         add(obj, "App::PropertyInteger", "Tets", "Summary", "Tets of the analysed mesh", READ_ONLY)
+        add(obj, "App::PropertyFloat", "MeshSize", "Summary", "Size the mesh was made with",
+            READ_ONLY)
 
     def onDocumentRestored(self, obj):
         self.setup(obj)
@@ -47,7 +50,7 @@ class SingularCurves(ProxyBase):
     def execute(self, obj):
         from ..analysis import input_digest, run_analysis
         solid = shapes.solid_of(obj.Source)
-        size = obj.Size.Value or sizing.default_size(abs(solid.Volume))
+        size = obj.Size.Value or None  # 0: the backend's default
         digest = input_digest(solid, size)
         if digest != obj.InputDigest or not obj.Report:
             report = run_analysis(solid, size)
@@ -65,3 +68,4 @@ class SingularCurves(ProxyBase):
             setattr(obj, name, report["summary"][key])
         obj.Meshable = report["summary"]["meshable"]
         obj.Tets = int(report["mesh"].get("tets", 0))
+        obj.MeshSize = float(report["mesh"].get("size", 0.0))

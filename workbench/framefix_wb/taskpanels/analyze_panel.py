@@ -52,9 +52,11 @@ class AnalyzePanel:
         self.started = 0.0
         self._build()
         self._set_source(source)
-        if analysis_obj is not None and analysis_obj.Size.Value > 0:
-            self.size.setValue(analysis_obj.Size.Value)
-            self.last = (analysis_obj.Source.Name, analysis_obj.Size.Value)
+        if analysis_obj is not None:
+            self.auto.setChecked(analysis_obj.Size.Value == 0)
+            if analysis_obj.Size.Value > 0:
+                self.size.setValue(analysis_obj.Size.Value)
+            self.last = (analysis_obj.Source.Name, self.chosen_size())
         if message:
             self._show_error(message)
         self.ticker = QtCore.QTimer(self.form)  # dies with the form, however it is closed
@@ -80,11 +82,11 @@ class AnalyzePanel:
         self.size.setToolTip("Target tet edge length, in model units")
         self.size.valueChanged.connect(self._update_estimate)
         grid.addWidget(self.size, 0, 1)
-        self.default_button = QtWidgets.QToolButton()
-        self.default_button.setText("Default")
-        self.default_button.setToolTip("The size giving about %d tets" % sizing.TARGET_TETS)
-        self.default_button.clicked.connect(self._reset_size)
-        grid.addWidget(self.default_button, 0, 2)
+        self.auto = QtWidgets.QCheckBox("Automatic")
+        self.auto.setToolTip("Let the backend choose the size: about %d tets" % sizing.TARGET_TETS)
+        self.auto.setChecked(True)
+        self.auto.toggled.connect(self._reset_size)
+        grid.addWidget(self.auto, 0, 2)
         self.estimate = QtWidgets.QLabel()
         grid.addWidget(self.estimate, 1, 1, 1, 2)
         layout.addLayout(grid)
@@ -131,10 +133,16 @@ class AnalyzePanel:
                                 % (shapes.label_of(source), self.volume, diagonal))
         self._reset_size()
 
-    def _reset_size(self):
-        if self.volume > 0:
+    def _reset_size(self, *_):
+        """Automatic: show the size the backend will about choose, and lock it."""
+        self.size.setEnabled(not self.auto.isChecked())
+        if self.volume > 0 and self.auto.isChecked():
             self.size.setValue(sizing.default_size(self.volume))
         self._update_estimate()
+
+    def chosen_size(self):
+        """The size to run with; None: the backend's default."""
+        return None if self.auto.isChecked() else self.size.value()
 
     def _update_estimate(self, *_):
         if self.volume <= 0:
@@ -165,7 +173,7 @@ class AnalyzePanel:
             if self.source is None:
                 self._set_source(shapes.source_from_selection(FreeCADGui.Selection.getSelection()))
             solid = shapes.solid_of(self.source)
-            self.size_run = self.size.value()
+            self.size_run = self.chosen_size()
             self.digest = analysis.input_digest(solid, self.size_run)
             self.job = AnalysisJob(solid, self.size_run)
         except (FrameFixError, ReferenceError, RuntimeError, OSError) as e:
@@ -257,7 +265,7 @@ class AnalyzePanel:
         if self.runner.is_running():
             self.close_on_success = True
             return False
-        if self.source is not None and self.last == (self.source.Name, self.size.value()):
+        if self.source is not None and self.last == (self.source.Name, self.chosen_size()):
             self._close()
             return True
         self.close_on_success = self.apply()
