@@ -8,6 +8,7 @@
 
 #include "framefix/mesh/features.h"
 #include "framefix/mesh/surface_mesh.h"
+#include "framefix/mesh/types.h"
 
 namespace framefix {
 
@@ -30,6 +31,13 @@ struct FeatureOptions {
     double tangent_angle_deg = 30;  // |theta - 180| below this: not a feature (tangent-continuous)
 };
 FeatureSet classify_features(const BrepModel& model, const FeatureOptions& options = {});
+
+// Positions of the B-rep vertices: row i is Vertex<i+1> (TetMesh::corner_vertices order).
+Points vertex_points(const BrepModel& model);
+
+// Distance from p to B-rep edge `edge` (1-based, Edge<i>) / face `face` (Face<i>), model units.
+double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p);
+double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d& p);
 
 // Size h for about `target_tets` near-uniform tets in this solid.
 double default_size(const BrepModel& model, int target_tets = 50000);

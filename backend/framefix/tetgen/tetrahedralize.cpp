@@ -75,6 +75,19 @@ void fill_input(const SurfaceMesh& s, tetgenio& in) {
     }
 }
 
+// TetGen 1.5 can crash (not throw) when the PLC intersects itself, so its -d check runs first.
+void check_self_intersections(tetgenio& in) {
+    tetgenio report;
+    char switches[] = "pdzQ";
+    try {
+        ::tetrahedralize(switches, &in, &report);
+    } catch (int code) {
+        throw Error("mesh", tetgen_failure(code));
+    }
+    if (report.numberoftrifaces > 0)
+        throw Error("mesh", tetgen_failure(3) + " (" + std::to_string(report.numberoftrifaces) + " triangles involved)");
+}
+
 }  // namespace
 
 TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
@@ -87,6 +100,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
 
     tetgenio in, out;
     fill_input(surface, in);
+    check_self_intersections(in);
     char switches[128];
     std::snprintf(switches, sizeof switches, "pYq1.3/15a%.17gzeQ", kVolumeFactor * h * h * h);
     try {

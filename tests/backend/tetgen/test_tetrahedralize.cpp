@@ -96,13 +96,13 @@ TEST(Tetrahedralize, RefusesSizesBeyondMemory) {
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_EQ(e.stage(), "mesh");
-        EXPECT_NE(e.message().find("size 0.001 needs about 1.2e+10 tets (~11518 GB, limit 1000 MB)"), std::string::npos) << e.what();
-        EXPECT_NE(e.message().find("use --size 0.024 or larger"), std::string::npos) << e.what();
+        EXPECT_NE(e.message().find("size 0.001 needs about 1.2e+10 tets (~4596 GB, limit 1000 MB)"), std::string::npos) << e.what();
+        EXPECT_NE(e.message().find("use --size 0.018 or larger"), std::string::npos) << e.what();
     }
 }
 
 TEST(Tetrahedralize, SuggestedSizeIsAccepted) {
-    MeshOptions o = sized(0.024);
+    MeshOptions o = sized(0.018);
     o.max_memory_mb = 1000;
     EXPECT_NO_THROW(check_memory(1.0, o.size, o));
 }

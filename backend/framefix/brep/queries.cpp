@@ -1,0 +1,51 @@
+// Geometric queries on a model, for tests and for corrections that snap to B-rep entities.
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
+#include <BRep_Tool.hxx>
+#include <TopoDS.hxx>
+
+#include "framefix/brep/occt_error.h"
+#include "framefix/brep/shape.h"
+
+namespace framefix {
+namespace {
+
+double distance_to(const TopoDS_Shape& target, const Eigen::Vector3d& p) {
+    return occt_call("brep", "distance query", [&] {
+        const TopoDS_Vertex v = BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z()));
+        BRepExtrema_DistShapeShape dist(v, target);
+        if (!dist.IsDone()) throw Error("brep", "distance query failed");
+        return dist.Value();
+    });
+}
+
+}  // namespace
+
+Points vertex_points(const BrepModel& model) {
+    FF_ASSERT(model.shape);
+    const auto& vertices = model.shape->vertices;
+    Points points(vertices.Extent(), 3);
+    for (int i = 1; i <= vertices.Extent(); ++i) {
+        const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(vertices(i)));
+        points.row(i - 1) << p.X(), p.Y(), p.Z();
+    }
+    return points;
+}
+
+double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p) {
+    FF_ASSERT(model.shape);
+    if (edge < 1 || edge > model.num_edges)
+        throw Error("brep", "Edge" + std::to_string(edge) + " does not exist; the model has " +
+                                std::to_string(model.num_edges) + " edges");
+    return distance_to(model.shape->edges(edge), p);
+}
+
+double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d& p) {
+    FF_ASSERT(model.shape);
+    if (face < 1 || face > model.num_faces)
+        throw Error("brep", "Face" + std::to_string(face) + " does not exist; the model has " +
+                                std::to_string(model.num_faces) + " faces");
+    return distance_to(model.shape->faces(face), p);
+}
+
+}  // namespace framefix
