@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
                     "singular_faces %d complex %d\n",
                     s.curves, s.valence3, s.valence5, s.curves_3_5, s.mixed_loops, s.nodes, s.invalid_nodes,
                     int(s.meshable), s.singular_faces, s.complex_faces);
+        std::printf("chains: dead ends %d (attached %d), junk %d, joined through %d\n", g.dead_ends, g.dead_ends_attached,
+                    g.junk_chains, g.joined);
         for (const SingularCurve& c : g.curves) {
             int n3 = 0, n5 = 0;
             for (int v : c.valences) (v == 3 ? n3 : n5) += 1;

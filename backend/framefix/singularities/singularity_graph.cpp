@@ -73,6 +73,10 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
     SingularityGraph g;
     g.h_mean = chains.h_mean;
     g.subsampled_edges = h.subsampled_edges;
+    g.dead_ends = chains.dead_ends;
+    g.dead_ends_attached = chains.dead_ends_attached;
+    g.junk_chains = chains.junk_chains;
+    g.joined = chains.joined;
     for (size_t i = 0; i < chains.curves.size(); ++i) {
         g.curves.push_back(make_curve(chains.curves[i], h, options));
         g.curves.back().id = int(i);
