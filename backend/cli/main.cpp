@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "framefix/core/error.h"
+#include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/pipeline/report.h"
 
@@ -17,6 +18,7 @@ struct Args {
     double size = 0, size_factor = 1;
     int threads = 0;
     bool quiet = false;
+    std::string method = "snap";
 };
 
 void add_common(CLI::App* cmd, Args& a) {
@@ -39,10 +41,10 @@ framefix::AnalysisOptions options_from(const Args& a) {
     return o;
 }
 
-int finish(const framefix::AnalysisResult& r, const Args& a) {
+int finish(const framefix::AnalysisResult& r, const Args& a, const framefix::Correction* c = nullptr) {
     const std::string out = a.out.empty() ? "framefix-out" : a.out;
-    framefix::write_outputs(r, out);
-    std::cout << framefix::human_summary(r) << "\n";
+    framefix::write_outputs(r, out, c);
+    std::cout << framefix::human_summary(r, c) << "\n";
     std::cout << "results: " << out << "/report.json\n";
     return 0;
 }
@@ -55,8 +57,12 @@ int main(int argc, char** argv) {
     Args a;
     auto* mesh = app.add_subcommand("mesh", "load a part, classify feature curves, build the tet mesh");
     auto* analyze = app.add_subcommand("analyze", "mesh, frame field, singular curves, 3-5 curves");
+    auto* correct = app.add_subcommand("correct", "analyze, then correct the 3-5 curves and analyze again");
     add_common(mesh, a);
     add_common(analyze, a);
+    add_common(correct, a);
+    correct->add_option("--method", a.method, "snap (default), fillet, extrude-curves, extrude-nodes")
+        ->check(CLI::IsMember({"snap", "fillet", "extrude-curves", "extrude-nodes"}));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -68,6 +74,14 @@ int main(int argc, char** argv) {
     try {
         const auto o = options_from(a);
         if (mesh->parsed()) return finish(framefix::mesh_part(a.part, o), a);
+        if (correct->parsed()) {
+            framefix::CorrectionOptions co;
+            co.method = a.method;
+            framefix::check_correction_method(co.method);  // refuse before the long analysis
+            auto r = framefix::analyze(a.part, o);
+            const auto c = framefix::correct(r, co, o);
+            return finish(r, a, &c);
+        }
         return finish(framefix::analyze(a.part, o), a);
     } catch (const framefix::Error& e) {
         std::cerr << "framefix: error [" << e.stage() << "]: " << e.message() << "\n";

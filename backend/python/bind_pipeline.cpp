@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/pipeline/report.h"
 
@@ -33,9 +34,43 @@ void bind_pipeline(py::module_& m) {
         .def_property_readonly("singularities", [](const AnalysisResult& r) -> py::object {
             return r.has_singularities ? py::cast(r.singularities) : py::none();
         })
-        .def_property_readonly("report_json", &report_json)
-        .def("write_outputs", &write_outputs, py::arg("folder"))
-        .def_property_readonly("human_summary", &human_summary);
+        .def_property_readonly("report_json", [](const AnalysisResult& r) { return report_json(r); })
+        .def("write_outputs", [](const AnalysisResult& r, const std::string& dir) { return write_outputs(r, dir); },
+             py::arg("folder"))
+        .def_property_readonly("human_summary", [](const AnalysisResult& r) { return human_summary(r); });
+
+    // A corrected analysis: the corrected result plus what the correction did.
+    struct Corrected {
+        AnalysisResult result;
+        Correction correction;
+    };
+    py::class_<Corrected>(m, "Corrected", "A corrected analysis (result = after, correction = what changed)")
+        .def_readonly("result", &Corrected::result)
+        .def_property_readonly("method", [](const Corrected& c) { return c.correction.method; })
+        .def_property_readonly("snapped_paths", [](const Corrected& c) {
+            std::vector<Points> out;
+            for (const auto& p : c.correction.snap.paths) out.push_back(p.points);
+            return out;
+        })
+        .def_property_readonly("rotated_fraction", [](const Corrected& c) { return c.correction.rotated_fraction; })
+        .def_property_readonly("report_json", [](const Corrected& c) { return report_json(c.result, &c.correction); })
+        .def("write_outputs",
+             [](const Corrected& c, const std::string& dir) { return write_outputs(c.result, dir, &c.correction); },
+             py::arg("folder"))
+        .def_property_readonly("human_summary", [](const Corrected& c) { return human_summary(c.result, &c.correction); });
+    m.def(
+        "correct_file",
+        [](const std::string& path, const std::string& method, double size, double size_factor, int threads) {
+            check_correction_method(method);
+            const auto o = make_options(size, size_factor, threads);
+            Corrected c{analyze(path, o), {}};
+            CorrectionOptions co;
+            co.method = method;
+            c.correction = correct(c.result, co, o);
+            return c;
+        },
+        py::arg("path"), py::arg("method") = "snap", py::arg("size") = 0.0, py::arg("size_factor") = 1.0,
+        py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
 
     m.def(
         "mesh_part",

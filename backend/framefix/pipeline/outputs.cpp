@@ -87,9 +87,31 @@ VtkGrid nodes_grid(const SingularityGraph& s) {
     return g;
 }
 
+VtkGrid paths_grid(const SnapResult& snap) {
+    VtkGrid g;
+    int n = 0;
+    for (const auto& p : snap.paths) n += int(p.points.rows());
+    g.points.resize(n, 3);
+    VtkArray source{"source_curve", 1, {}}, forced{"forced", 1, {}};
+    int at = 0;
+    for (const auto& p : snap.paths) {
+        std::vector<int> cell;
+        for (int i = 0; i < p.points.rows(); ++i, ++at) {
+            g.points.row(at) = p.points.row(i);
+            cell.push_back(at);
+        }
+        g.cells.push_back(cell);
+        g.cell_types.push_back(kVtkPolyline);
+        source.data.push_back(p.source_curve);
+        forced.data.push_back(p.forced);
+    }
+    g.cell_data = {source, forced};
+    return g;
+}
+
 }  // namespace
 
-std::vector<std::string> write_outputs(const AnalysisResult& r, const std::string& dir) {
+std::vector<std::string> write_outputs(const AnalysisResult& r, const std::string& dir, const Correction* correction) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw Error("output", "cannot create folder " + dir + ": " + ec.message());
@@ -104,8 +126,14 @@ std::vector<std::string> write_outputs(const AnalysisResult& r, const std::strin
         written.push_back(path("singular_curves.vtk"));
         written.push_back(path("singular_nodes.vtk"));
     }
+    if (correction) {
+        write_vtk(curves_grid(correction->graph_before), path("singular_curves_before.vtk"), "FrameFix singular curves before correction");
+        write_vtk(paths_grid(correction->snap), path("snapped_curves.vtk"), "FrameFix snapped curves (boundary paths)");
+        written.push_back(path("singular_curves_before.vtk"));
+        written.push_back(path("snapped_curves.vtk"));
+    }
     std::ofstream out(path("report.json"));
-    out << report_json(r) << '\n';
+    out << report_json(r, correction) << '\n';
     if (!out) throw Error("output", "cannot write " + path("report.json"));
     written.push_back(path("report.json"));
     return written;

@@ -81,9 +81,29 @@ void add_features(json& j, const AnalysisResult& r) {
     j["feature_curves"] = curves;
 }
 
+json correction_json(const Correction& c, const SingularitySummary& after) {
+    json paths = json::array();
+    for (const auto& p : c.snap.paths) {
+        json pts = json::array();
+        for (int i = 0; i < p.points.rows(); ++i) pts.push_back(point(p.points.row(i).transpose()));
+        paths.push_back({{"source_curve", p.source_curve}, {"forced", p.forced},
+                         {"crosses_features", p.crosses_features}, {"points", pts}});
+    }
+    return {{"method", c.method},
+            {"before", summary_json(c.before)},
+            {"after", summary_json(after)},
+            {"changed_curves", c.snap.snapped_curve_ids.size()},
+            {"three_five_curves_snapped", c.snap.three_five_curves},
+            {"freed_vertices", c.snap.freed_vertices},
+            {"rotated_fraction_10deg", c.rotated_fraction},
+            {"seconds", c.seconds},
+            {"snapped_paths", paths},
+            {"curves_before", singularities_json(c.graph_before)["curves"]}};
+}
+
 }  // namespace
 
-std::string report_json(const AnalysisResult& r) {
+std::string report_json(const AnalysisResult& r, const Correction* correction) {
     json j;
     j["version"] = 1;
     j["input"] = {{"path", r.input_path}, {"kind", r.input_kind}};
@@ -95,15 +115,17 @@ std::string report_json(const AnalysisResult& r) {
                       {"iterations", r.field.iterations},
                       {"solver", r.field.solver}};
     if (r.has_singularities) j["singularities"] = singularities_json(r.singularities);
+    if (correction) j["correction"] = correction_json(*correction, r.singularities.summary);
     json t = {{"load", r.timings.load}, {"mesh", r.timings.mesh}, {"total", r.timings.total}};
     if (r.has_field) t["field"] = r.timings.field;
     if (r.has_singularities) t["singularities"] = r.timings.singularities;
+    if (correction) t["correct"] = correction->seconds;
     j["timings_s"] = t;
     j["peak_memory_mb"] = r.peak_memory_mb;
     return j.dump(1);
 }
 
-std::string human_summary(const AnalysisResult& r) {
+std::string human_summary(const AnalysisResult& r, const Correction* correction) {
     const std::string name = std::filesystem::path(r.input_path.empty() ? "shape" : r.input_path).filename();
     char tets[32];
     const int nt = r.mesh.num_tets();
@@ -125,6 +147,11 @@ std::string human_summary(const AnalysisResult& r) {
         s += m.meshable ? " (hex-meshable)" : " (not hex-meshable)";
     } else {
         s += ", " + std::to_string(r.features.curves()) + " feature curves";
+    }
+    if (correction) {
+        const auto& b = correction->before;
+        s += "; before " + correction->method + ": " + std::to_string(b.curves_3_5) + " 3-5 curve" +
+             (b.curves_3_5 == 1 ? "" : "s") + ", " + std::to_string(correction->snap.snapped_curve_ids.size()) + " snapped";
     }
     char t[32];
     std::snprintf(t, sizeof t, "; %.1f s", r.timings.total);

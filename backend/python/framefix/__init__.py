@@ -14,7 +14,7 @@ from ._core import (Error, Shape, EdgeFeature, TetMesh, FrameField, SingularityG
 __all__ = ["Error", "Shape", "TetMesh", "FrameField", "SingularityGraph", "Analysis",
            "load_shape", "load_brep_string", "to_brep_string", "classify_features",
            "default_size", "tetrahedralize", "mesh_quality", "solve_frame_field",
-           "extract_singularities", "mesh_part", "analyze", "report"]
+           "extract_singularities", "mesh_part", "analyze", "correct", "report"]
 
 
 def analyze(part, size=None, size_factor=1.0, threads=0):
@@ -28,6 +28,15 @@ def analyze(part, size=None, size_factor=1.0, threads=0):
     if isinstance(part, str) and part.lstrip().startswith("DBRep_DrawableShape"):
         return _core.analyze_shape(load_brep_string(part), size, size_factor, threads)
     return _core.analyze_file(str(part), size, size_factor, threads)
+
+
+def correct(part, method="snap", size=None, size_factor=1.0, threads=0):
+    """Analyse a CAD file, correct its 3-5 curves with `method` (snap), analyse again.
+
+    Returns a ``Corrected``: ``.result`` is the corrected :class:`Analysis`; ``report(c)`` has the
+    ``correction`` section with the before and after summaries.
+    """
+    return _core.correct_file(str(part), method, float(size or 0.0), size_factor, threads)
 
 
 def report(result):

@@ -8,12 +8,13 @@ import sys
 
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python -m framefix")
-    parser.add_argument("command", choices=["mesh", "analyze"])
+    parser.add_argument("command", choices=["mesh", "analyze", "correct"])
     parser.add_argument("part")
     parser.add_argument("--size", type=float, default=0.0)
     parser.add_argument("--size-factor", type=float, default=1.0)
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--out", default="framefix-out")
+    parser.add_argument("--method", default="snap")
     try:
         args = parser.parse_args(argv)
     except SystemExit as e:
@@ -22,6 +23,8 @@ def main(argv=None):
     try:
         if args.command == "mesh":
             result = framefix.mesh_part(args.part, args.size, args.size_factor, args.threads)
+        elif args.command == "correct":
+            result = framefix.correct(args.part, args.method, args.size, args.size_factor, args.threads)
         else:
             result = framefix.analyze(args.part, args.size, args.size_factor, args.threads)
         result.write_outputs(args.out)
