@@ -1,9 +1,10 @@
+#include "framefix/singularities/chain_ends.h"
+
 #include <algorithm>
 #include <map>
 #include <utility>
 
 #include "framefix/core/error.h"
-#include "framefix/singularities/chain_ends.h"
 
 namespace framefix::detail {
 namespace {

@@ -1,7 +1,5 @@
 #include "framefix/singularities/chains.h"
 
-#include <algorithm>
-#include <map>
 #include <utility>
 
 #include "framefix/core/error.h"

@@ -1,8 +1,9 @@
+#include "framefix/singularities/chain_ends.h"
+
 #include <algorithm>
 #include <utility>
 
 #include "framefix/core/error.h"
-#include "framefix/singularities/chain_ends.h"
 
 namespace framefix::detail {
 namespace {
