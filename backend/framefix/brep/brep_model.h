@@ -1,6 +1,8 @@
 #pragma once
 // Loading CAD solids and everything that needs OpenCASCADE: the only module that includes it.
 // A BrepModel holds exactly one valid solid; loaders refuse anything else with a framefix::Error.
+// A file whose only solid comes with loose shells, faces or edges (construction geometry, as in
+// some HexMe files) loads that solid; face/edge/vertex indices are always those of the solid.
 #include <memory>
 #include <string>
 

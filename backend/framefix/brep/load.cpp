@@ -50,11 +50,7 @@ TopoDS_Solid single_solid(const TopoDS_Shape& shape, const std::string& source) 
     const int faces = count(shape, TopAbs_FACE, TopAbs_SHELL);
     const int edges = count(shape, TopAbs_EDGE, TopAbs_FACE);
     if (solids > 1) throw Error("load", source + " contains " + plural(solids, "solid") + "; " + kOneSolid);
-    if (solids == 1) {
-        if (shells + faces + edges > 0)
-            throw Error("load", source + " contains 1 solid plus loose geometry (" + plural(shells, "shell") +
-                                    ", " + plural(faces, "face") + ", " + plural(edges, "edge") +
-                                    "); " + kOneSolid);
+    if (solids == 1) {  // loose shells, faces or edges beside it (construction geometry) are ignored
         TopExp_Explorer it(shape, TopAbs_SOLID);
         return TopoDS::Solid(it.Current());
     }
