@@ -150,7 +150,8 @@ class AnalyzePanel:
             return
         tets = sizing.estimate_tets(self.volume, self.size.value())
         warn = " <b>(large: may take minutes)</b>" if tets > 2e6 else ""
-        self.estimate.setText("\u2248 {:,.0f} tets (estimate){}".format(tets, warn))
+        self.estimate.setText("\u2248 {:,.0f} tets (estimate){}".format(
+            float("%.2g" % tets), warn))
 
     def _follow_selection(self):
         if self.fixed_source or self.runner.is_running():
@@ -212,6 +213,8 @@ class AnalyzePanel:
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (self.source.Label, text))
         self._log(text)
         self._show_summary(report)
+        self.estimate.setText("{:,} tets, size {:.4g} (this run)".format(
+            int(report["mesh"].get("tets", 0)), float(report["mesh"].get("size", 0))))
         FreeCADGui.Selection.clearSelection()  # the part's highlight would hide the curves
         if self.close_on_success:
             self._close()
