@@ -23,20 +23,6 @@ json summary_json(const SingularitySummary& s) {
             {"meshable", s.meshable}};
 }
 
-// Majority valence of the first (end 0) or last (end 1) min(3, n/3) triangles of a curve.
-int end_valence(const SingularCurve& c, int end) {
-    const int n = int(c.valences.size());
-    if (n == 0) return 0;
-    const int k = std::max(1, std::min(3, n / 3));
-    int n3 = 0, n5 = 0;
-    for (int i = 0; i < k; ++i) {
-        const int v = c.valences[end == 0 ? i : n - 1 - i];
-        n3 += v == 3;
-        n5 += v == 5;
-    }
-    return n3 >= n5 ? 3 : 5;
-}
-
 json singularities_json(const SingularityGraph& g) {
     json curves = json::array(), nodes = json::array();
     for (const auto& c : g.curves) {
@@ -47,7 +33,7 @@ json singularities_json(const SingularityGraph& g) {
                           {"length", c.length},
                           {"ends", json::array({c.ends[0], c.ends[1]})},
                           {"closed", c.closed},
-                          {"end_valences", json::array({end_valence(c, 0), end_valence(c, 1)})},
+                          {"end_valences", json::array({c.end_valence[0], c.end_valence[1]})},
                           {"triangles", c.faces.size()},
                           {"transition", c.transition},
                           {"stable_direction", point(c.stable_direction)},
