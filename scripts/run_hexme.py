@@ -1,0 +1,59 @@
+#!/usr/bin/env python3
+"""Runs `framefix analyze` (or `correct`) on every model of a folder (default: the HexMe set in
+../shared/data/hexme) and prints a table of summaries and timings. Not part of ctest.
+
+    /usr/bin/python3 scripts/run_hexme.py [--command correct] [--folder DIR] [--size-factor F]
+"""
+import argparse
+import json
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--folder", default=str(ROOT.parent / "shared" / "data" / "hexme"))
+    p.add_argument("--command", default="analyze", choices=["mesh", "analyze", "correct"])
+    p.add_argument("--size-factor", default="1")
+    p.add_argument("--out", default="/tmp/framefix-hexme")
+    p.add_argument("--timeout", type=float, default=1800)
+    args = p.parse_args()
+    binary = ROOT / "build" / "bin" / "framefix"
+    models = sorted(x for x in Path(args.folder).iterdir() if x.suffix.lower() in (".step", ".stp", ".brep", ".iges", ".igs"))
+    print(f"| model | exit | tets | curves | val3 | val5 | 3-5 | invalid nodes | meshable | after 3-5 | after meshable | seconds |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for m in models:
+        out = Path(args.out) / m.stem
+        t0 = time.time()
+        try:
+            r = subprocess.run([str(binary), args.command, str(m), "--out", str(out), "--quiet",
+                                "--size-factor", args.size_factor], capture_output=True, text=True, timeout=args.timeout)
+            code, err = r.returncode, r.stderr.strip().splitlines()[-1:] if r.stderr.strip() else []
+        except subprocess.TimeoutExpired:
+            code, err = "timeout", []
+        dt = time.time() - t0
+        row = [m.name, str(code)]
+        if code == 0:
+            rep = json.loads((out / "report.json").read_text())
+            s = rep.get("singularities", {}).get("summary", {})
+            c = rep.get("correction", {})
+            before = c.get("before", s)
+            row += [str(rep["mesh"]["tets"]), str(before.get("curves", "-")), str(before.get("valence3", "-")),
+                    str(before.get("valence5", "-")), str(before.get("curves_3_5", "-")),
+                    str(before.get("invalid_nodes", "-")), str(before.get("meshable", "-")),
+                    str(c.get("after", {}).get("curves_3_5", "-")), str(c.get("after", {}).get("meshable", "-"))]
+        else:
+            row += ["-"] * 9
+            if err:
+                row[0] += f" ({err[0][:80]})"
+        row.append(f"{dt:.1f}")
+        print("| " + " | ".join(row) + " |", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
