@@ -49,9 +49,9 @@ int singular_faces_near(const TetTopology& topo, const SingularityGraph& g, cons
 void print_snap(const SnapResult& s) {
     int forced = 0, crossing = 0, path_vertices = 0;
     for (const SnappedPath& p : s.paths) forced += p.forced, crossing += p.crosses_features, path_vertices += int(p.vertices.size());
-    std::printf("  snap    3-5 %d snapped_curves %zu paths %zu (forced %d, crossing features %d, %d vertices) "
+    std::printf("  snap    3-5 %d snapped_curves %d paths %zu (forced %d, crossing features %d, %d vertices) "
                 "collapsed_ends %d freed %d hb %.4f  %.3f s\n",
-                s.three_five_curves, s.snapped_curves.size(), s.paths.size(), forced, crossing, path_vertices,
+                s.three_five_curves, s.snapped_curves, s.paths.size(), forced, crossing, path_vertices,
                 s.collapsed_ends, s.freed_vertices, s.hb, s.seconds);
     for (const SnappedPath& p : s.paths)
         std::printf("          curve %3d %s %3zu vertices  (%.3f %.3f %.3f) -> (%.3f %.3f %.3f)\n", p.source_curve,

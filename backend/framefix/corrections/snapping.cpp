@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <map>
+#include <set>
 #include <string>
 
 #include "framefix/core/error.h"
@@ -86,17 +87,30 @@ std::map<int, SH9> apply_paths(const BoundaryGraph& boundary, const std::vector<
     return anchors;
 }
 
+// Feature vertices onto which a whole snapped curve collapsed (both targets equal, no path).
+std::set<int> collapsed_feature_points(const SnapPlan& plan, const BoundaryGraph& boundary) {
+    std::set<int> points;
+    for (const auto& t : plan.targets)
+        if (t[0] == t[1] && boundary.is_feature[t[0]]) points.insert(t[0]);
+    return points;
+}
+
 void apply_anchors(const TetMesh& mesh, const FeatureSet& features, const Constraints& original,
-                   const std::map<int, SH9>& anchors, const SnapOptions& options, SnapResult& r) {
-    if (options.interpolate_split_curves) {
-        const auto frames = interpolate_split_curves(mesh.points, feature_chains(mesh, features), original, anchors);
+                   const std::map<int, SH9>& anchors, const std::set<int>& collapsed, const SnapOptions& options,
+                   SnapResult& r) {
+    // Without interpolation (the default) only S itself takes the path frame: the prototype found
+    // the same singularities with a more local change. A curve collapsed onto a feature vertex
+    // leaves no path frame to impose, so its feature curve is always re-interpolated between its
+    // ends: that is the only change that removes it.
+    const std::map<int, SH9> interpolated_anchors = options.interpolate_split_curves ? anchors : std::map<int, SH9>{};
+    if (!interpolated_anchors.empty() || !collapsed.empty()) {
+        const auto frames =
+            interpolate_split_curves(mesh.points, feature_chains(mesh, features), original, interpolated_anchors, collapsed);
         for (const auto& [v, q] : frames) {
             set_fixed(r.constraints, v, q);
             r.vertex_role[v] = anchors.count(v) ? SnapRole::Path : SnapRole::SplitCurve;
         }
     }
-    // Without interpolation (the default) only S itself takes the path frame: the prototype found
-    // the same singularities with a more local change.
     for (const auto& [v, q] : anchors) {
         if (options.interpolate_split_curves && r.vertex_role[v] == SnapRole::Path) continue;
         set_fixed(r.constraints, v, q);
@@ -140,7 +154,8 @@ SnapResult snap_three_five_curves(const TetMesh& mesh, const TetTopology& topo, 
     const CurveEnds ends = classify_curve_ends(graph, options.dead_end_radius_h * boundary.h_mean);
     const SnapPlan plan = plan_snapping(graph, ends, boundary, mesh.points, options);
     r.three_five_curves = plan.three_five_curves;
-    r.snapped_curves = plan.curves;
+    r.snapped_curve_ids = plan.curves;
+    r.snapped_curves = int(plan.curves.size());
     r.collapsed_ends = plan.collapsed_ends;
     r.node_target.resize(graph.nodes.size());
     for (size_t n = 0; n < graph.nodes.size(); ++n) r.node_target[n] = plan.node_target[ends.node_rep[n]];
@@ -148,7 +163,7 @@ SnapResult snap_three_five_curves(const TetMesh& mesh, const TetTopology& topo, 
     if (!plan.curves.empty()) {
         r.paths = build_paths(mesh, boundary, plan, options);
         const std::map<int, SH9> anchors = apply_paths(boundary, r.paths, r);
-        apply_anchors(mesh, features, constraints, anchors, options, r);
+        apply_anchors(mesh, features, constraints, anchors, collapsed_feature_points(plan, boundary), options, r);
         free_near_paths(mesh, boundary, constraints, options, r);
     }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -61,7 +61,8 @@ struct SnappedPath {
 struct SnapResult {
     Constraints constraints;        // the new boundary conditions (same vertex space as the input)
     std::vector<SnappedPath> paths; // one per snapped curve whose two targets differ
-    std::vector<int> snapped_curves;     // curve ids: the 3-5 curves first, then forced ones
+    int snapped_curves = 0;         // 3-5 curves + curves forced by the fixed point
+    std::vector<int> snapped_curve_ids;  // #snapped_curves graph curve ids: the 3-5 curves first, then forced ones
     std::vector<int> node_target;   // #nodes of the graph: snap target vertex of each node, -1 if none
     std::vector<SnapRole> vertex_role;   // #V
     int three_five_curves = 0;      // 3-5 curves found in the graph

@@ -2,6 +2,7 @@
 #include "framefix/corrections/split_curves.h"
 
 #include <algorithm>
+#include <set>
 
 #include "framefix/core/error.h"
 #include "framefix/frame_field/projection.h"
@@ -66,14 +67,17 @@ std::vector<FeatureChain> feature_chains(const TetMesh& mesh, const FeatureSet& 
 
 std::vector<std::pair<int, SH9>> interpolate_split_curves(const Points& points, const std::vector<FeatureChain>& chains,
                                                           const Constraints& original,
-                                                          const std::map<int, SH9>& anchors) {
+                                                          const std::map<int, SH9>& anchors,
+                                                          const std::set<int>& collapsed) {
     std::vector<std::pair<int, SH9>> result;
-    for (const FeatureChain& chain : chains) {
-        std::vector<int> ch = chain.vertices;
+    for (const FeatureChain& ch0 : chains) {
+        std::vector<int> ch = ch0.vertices;
         auto first_anchor = std::find_if(ch.begin(), ch.end(), [&](int v) { return anchors.count(v) > 0; });
-        if (first_anchor == ch.end()) continue;
-        const bool cyclic = chain.closed && !is_fixed(original, ch.front());
+        const bool has_collapsed = std::any_of(ch.begin(), ch.end(), [&](int v) { return collapsed.count(v) > 0; });
+        if (first_anchor == ch.end() && !has_collapsed) continue;
+        const bool cyclic = ch0.closed && !is_fixed(original, ch.front());
         if (cyclic) {
+            if (first_anchor == ch.end()) continue;  // a smooth loop with no S point has no anchor at all
             // Start and end the loop at an S point so that the S points are its only anchors.
             std::vector<int> loop(ch.begin(), ch.end() - 1);
             std::rotate(loop.begin(), loop.begin() + (first_anchor - ch.begin()), loop.end());
@@ -92,6 +96,7 @@ std::vector<std::pair<int, SH9>> interpolate_split_curves(const Points& points, 
         for (int k = 0; k <= last; ++k)
             if (anchors.count(ch[k])) anchor_at[k] = anchors.at(ch[k]);
 
+        if (anchor_at.size() < 2) continue;
         const std::vector<double> s = arc_lengths(points, ch);
         for (auto a = anchor_at.begin(), b = std::next(a); b != anchor_at.end(); ++a, ++b) {
             const double span = std::max(s[b->first] - s[a->first], 1e-300);

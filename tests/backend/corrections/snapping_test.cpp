@@ -48,7 +48,7 @@ TEST(Snapping, GraphWithoutThreeFiveCurveLeavesConstraintsIdentical) {
     const SnapResult r = snap_three_five_curves(c.mesh, c.topo, c.features, c.constraints, c.field, g);
     EXPECT_TRUE(same_constraints(r.constraints, c.constraints));
     EXPECT_TRUE(r.paths.empty());
-    EXPECT_TRUE(r.snapped_curves.empty());
+    EXPECT_EQ(r.snapped_curves, 0);
     EXPECT_EQ(r.freed_vertices, 0);
     EXPECT_EQ(r.three_five_curves, 0);
 }
@@ -57,7 +57,7 @@ TEST(Snapping, ThreeFiveCurveBecomesADirichletPathWithFreedSurroundings) {
     const test::Cube c = test::cube_tets(8);
     const SnapResult r = snap_three_five_curves(c.mesh, c.topo, c.features, c.constraints, c.field, one_three_five_curve());
     EXPECT_EQ(r.three_five_curves, 1);
-    EXPECT_EQ(r.snapped_curves, std::vector<int>{0});
+    EXPECT_EQ(r.snapped_curve_ids, std::vector<int>{0});
     ASSERT_EQ(r.paths.size(), 1u);
     const SnappedPath& p = r.paths[0];
     EXPECT_EQ(p.vertices.front(), c.vertex(4, 0, 0));
@@ -151,6 +151,34 @@ TEST(Snapping, RejectsConstraintsOfAnotherMesh) {
     const test::Cube c = test::cube_tets(3);
     const test::Cube other = test::cube_tets(4);
     EXPECT_THROW(snap_three_five_curves(c.mesh, c.topo, c.features, other.constraints, c.field, one_three_five_curve()), Error);
+}
+
+}  // namespace
+}  // namespace framefix
+
+namespace framefix {
+namespace {
+
+TEST(Snapping, CurveCollapsedOntoAFeatureVertexReinterpolatesItsCurve) {
+    const test::Cube c = test::cube_tets(8);
+    // Both ends of a short 3-5 curve next to the edge y=0, z=0: one target, no path.
+    SingularityGraph g;
+    g.nodes.push_back(test::node_at(0, {0.49, 0.03, 0.02}, true));
+    g.nodes.push_back(test::node_at(1, {0.51, 0.02, 0.03}, true));
+    g.curves.push_back(test::curve_between(0, 0, 1, CurveKind::ThreeFive, 4));
+    const SnapResult r = snap_three_five_curves(c.mesh, c.topo, c.features, c.constraints, c.field, g);
+    EXPECT_EQ(r.snapped_curves, 1);
+    EXPECT_TRUE(r.paths.empty());
+    int split = 0;
+    for (int v = 0; v < c.mesh.num_vertices(); ++v) {
+        if (r.vertex_role[v] != SnapRole::SplitCurve) continue;
+        ++split;
+        EXPECT_NEAR(c.point(v).y(), 0.0, 1e-12);
+        EXPECT_NEAR(c.point(v).z(), 0.0, 1e-12);
+        // Between two identity corners the interpolated frame is the identity.
+        EXPECT_LT((r.constraints.fixed.row(v) - c.constraints.fixed.row(v)).norm(), 1e-9);
+    }
+    EXPECT_EQ(split, 7);  // the inner vertices of that cube edge
 }
 
 }  // namespace
