@@ -218,7 +218,8 @@ class AnalyzePanel:
         FreeCADGui.Selection.clearSelection()  # the part's highlight would hide the curves
         if self.close_on_success:
             self._close()
-            FreeCADGui.Control.closeDialog()
+            # not from inside the backend's finished() signal: closing deletes this panel
+            QtCore.QTimer.singleShot(0, self._close_dialog_if_still_shown)
 
     def _on_failed(self, message):
         self._finish_job()
@@ -279,6 +280,14 @@ class AnalyzePanel:
         self.runner.cancel()
         self._close()
         return True
+
+    def _close_dialog_if_still_shown(self):
+        try:
+            shown = not self.closed and self.form.isVisible()
+        except RuntimeError:  # the form is gone already
+            shown = False
+        if shown:
+            FreeCADGui.Control.closeDialog()
 
     def _on_form_destroyed(self):
         """Closed by closeDialog() or FreeCAD, not by OK/Cancel: stop a run, touch no widget."""

@@ -4,6 +4,10 @@ The child is started through setsid(1), which makes it the leader of its own pro
 (it execs in place: same pid), so cancel and timeout kill it and everything it started
 without touching FreeCAD's own group. A crash, a non-zero exit or a bad report ends in
 `failed(message)`; only a checked report reaches `succeeded(report)`.
+
+Finished QProcess objects stay children of the runner until it goes (one per run). Whoever
+handles `succeeded`/`failed` must not delete the runner from inside the slot (they are
+emitted from the QProcess' finished()): FreeCAD segfaults; defer it with a timer.
 """
 import os
 import signal
@@ -77,7 +81,6 @@ class ProcessRunner(QtCore.QObject):
         self.process = None  # from here on, the process' own signals are ignored
         self._timer.stop()
         self._kill(p)
-        p.deleteLater()
         self.failed.emit(str(error))
 
     def _drain(self):
@@ -117,7 +120,6 @@ class ProcessRunner(QtCore.QObject):
         self.process = None
         self._timer.stop()
         crashed = exit_status == QtCore.QProcess.CrashExit
-        p.deleteLater()
         try:
             report = self.job.finish(exit_code, crashed=crashed,
                                      signal_number=exit_code if crashed else None)
