@@ -2,6 +2,7 @@
 #include "framefix/corrections/split_curves.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "framefix/core/error.h"
@@ -50,6 +51,13 @@ std::vector<double> arc_lengths(const Points& points, const std::vector<int>& ch
 
 bool is_fixed(const Constraints& c, int v) { return c.kind[v] == ConstraintKind::Fixed; }
 
+// Angle between two frames modulo the cube group, degrees.
+double frame_angle_deg(const SH9& qa, const SH9& qb) {
+    const Eigen::Matrix3d Ra = project_frame(qa).rotation;
+    const Eigen::Matrix3d Rb = match_frame(Ra, project_frame(qb).rotation);
+    return std::acos(std::clamp(((Ra.transpose() * Rb).trace() - 1) / 2, -1.0, 1.0)) * 180.0 / M_PI;
+}
+
 }  // namespace
 
 std::vector<FeatureChain> feature_chains(const TetMesh& mesh, const FeatureSet& features) {
@@ -87,9 +95,15 @@ std::vector<std::pair<int, SH9>> interpolate_split_curves(const Points& points, 
         std::map<int, SH9> anchor_at;  // chain index -> frame
         const int last = int(ch.size()) - 1;
         if (!cyclic && last >= 1) {
-            // An end vertex that is not Dirichlet (free corner) borrows its neighbour's frame.
+            // An end vertex that is not Dirichlet (free corner), or whose corner frame is more than
+            // 25 deg from the curve's own frames (seen on an imprinted arc meeting a box edge: the
+            // polar factor of two equal normals is 45 deg off), borrows its neighbour's frame.
             for (const auto& [k, nbr] : {std::pair<int, int>{0, 1}, std::pair<int, int>{last, last - 1}}) {
-                const int v = is_fixed(original, ch[k]) ? ch[k] : ch[nbr];
+                const bool use_end = is_fixed(original, ch[k]) &&
+                                     (!is_fixed(original, ch[nbr]) ||
+                                      frame_angle_deg(original.fixed.row(ch[k]).transpose(),
+                                                      original.fixed.row(ch[nbr]).transpose()) < 25);
+                const int v = use_end ? ch[k] : ch[nbr];
                 if (is_fixed(original, v)) anchor_at[k] = original.fixed.row(v).transpose();
             }
         }

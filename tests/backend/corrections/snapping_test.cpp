@@ -183,3 +183,22 @@ TEST(Snapping, CurveCollapsedOntoAFeatureVertexReinterpolatesItsCurve) {
 
 }  // namespace
 }  // namespace framefix
+
+namespace framefix {
+namespace {
+
+TEST(Snapping, InconsistentCornerFrameIsNotUsedAsAnAnchor) {
+    test::Cube c = test::cube_tets(4);
+    // Corner (0,0,0) carries a frame 45 deg off its curves' frames (a bad corner rule).
+    const int corner = c.vertex(0, 0, 0);
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    c.constraints.fixed.row(corner) = frame_from_rotation(R).transpose();
+    const auto frames = interpolate_split_curves(c.mesh.points, feature_chains(c.mesh, c.features), c.constraints, {},
+                                                 {c.vertex(2, 0, 0)});
+    ASSERT_FALSE(frames.empty());
+    const SH9 identity = frame_from_rotation(Eigen::Matrix3d::Identity());
+    for (const auto& [v, q] : frames) EXPECT_LT((q - identity).norm(), 1e-9) << "vertex " << v;
+}
+
+}  // namespace
+}  // namespace framefix
