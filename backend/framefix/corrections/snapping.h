@@ -5,8 +5,11 @@
 // feature-curve vertex, an internal node to the nearest boundary vertex), curves left with one
 // snapped extremity are snapped too (fixed point), each snapped curve becomes a shortest path on
 // the boundary edges with Dirichlet frames turned 45 deg about the path, and the tangency
-// constraint is dropped near the paths. This module only builds the new boundary conditions: the
-// caller re-solves the field (same mesh) and re-extracts the singularities.
+// constraint is dropped near the paths. A curve whose two ends land on one feature vertex (the
+// paper's box with an imprinted arc) gets no path: its feature curve is re-interpolated between
+// its ends instead. This module only builds the new boundary conditions: the caller re-solves the
+// field (same mesh) and re-extracts the singularities; the snapped curves are invisible to
+// holonomy afterwards, so SnapResult::paths must be kept as extra feature curves (blocks, §8).
 #include <vector>
 
 #include <Eigen/Core>

@@ -153,19 +153,13 @@ TEST(Snapping, RejectsConstraintsOfAnotherMesh) {
     EXPECT_THROW(snap_three_five_curves(c.mesh, c.topo, c.features, other.constraints, c.field, one_three_five_curve()), Error);
 }
 
-}  // namespace
-}  // namespace framefix
-
-namespace framefix {
-namespace {
-
 TEST(Snapping, CurveCollapsedOntoAFeatureVertexReinterpolatesItsCurve) {
     const test::Cube c = test::cube_tets(8);
     // Both ends of a short 3-5 curve next to the edge y=0, z=0: one target, no path.
     SingularityGraph g;
-    g.nodes.push_back(test::node_at(0, {0.49, 0.03, 0.02}, true));
-    g.nodes.push_back(test::node_at(1, {0.51, 0.02, 0.03}, true));
-    g.curves.push_back(test::curve_between(0, 0, 1, CurveKind::ThreeFive, 4));
+    g.nodes.push_back(node_at(0, {0.49, 0.03, 0.02}, true));
+    g.nodes.push_back(node_at(1, {0.51, 0.02, 0.03}, true));
+    g.curves.push_back(curve_between(0, 0, 1, CurveKind::ThreeFive, 4));
     const SnapResult r = snap_three_five_curves(c.mesh, c.topo, c.features, c.constraints, c.field, g);
     EXPECT_EQ(r.snapped_curves, 1);
     EXPECT_TRUE(r.paths.empty());
@@ -180,12 +174,6 @@ TEST(Snapping, CurveCollapsedOntoAFeatureVertexReinterpolatesItsCurve) {
     }
     EXPECT_EQ(split, 7);  // the inner vertices of that cube edge
 }
-
-}  // namespace
-}  // namespace framefix
-
-namespace framefix {
-namespace {
 
 TEST(Snapping, InconsistentCornerFrameIsNotUsedAsAnAnchor) {
     test::Cube c = test::cube_tets(4);
