@@ -1,6 +1,9 @@
 // framefix command line: parse flags -> AnalysisOptions -> pipeline -> files. Errors become exit
 // codes: 2 bad input or options (one line on stderr), 3 internal error. Never a stack trace.
 #include <cstdio>
+#include <cstdlib>
+
+#include <unistd.h>
 #include <iostream>
 #include <string>
 
@@ -52,6 +55,13 @@ int finish(const framefix::AnalysisResult& r, const Args& a, const framefix::Cor
 }  // namespace
 
 int main(int argc, char** argv) {
+    // libgomp reads OMP_WAIT_POLICY once, at load time. Its default spin-waiting made runs up to
+    // 8x slower when other processes share the cores (CI runs tests in parallel, FreeCAD's GUI
+    // runs beside the workbench's backend), so restart once with the passive policy.
+    if (!std::getenv("OMP_WAIT_POLICY")) {
+        setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
+        execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
+    }
     CLI::App app{"FrameFix: frame fields, singular curves and 3-5 curves of CAD solids for hex meshing"};
     app.require_subcommand(1);
     Args a;
