@@ -131,7 +131,21 @@ Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& topo, c
         } else if (vn.by_tag[v].size() == 3) {  // a corner with three CAD faces
             auto it = vn.by_tag[v].begin();
             const Vec3 n1 = it->second.normalized(), n2 = (++it)->second.normalized(), n3 = (++it)->second.normalized();
-            fix(v, corner_frame(n1, n2, n3));
+            // Two of the faces may be coplanar (an imprinted curve meeting an edge: a T-junction);
+            // the normals then span a plane only and their polar factor is arbitrary. The frame is
+            // the one of the crease between the two distinct normals.
+            const double c12 = std::abs(n1.dot(n2)), c13 = std::abs(n1.dot(n3)), c23 = std::abs(n2.dot(n3));
+            const double most_parallel = std::max({c12, c13, c23});
+            if (most_parallel > 0.9) {
+                const Vec3 a = n1, b = c12 > 0.9 ? n3 : n2;
+                const Vec3 t = a.cross(b);
+                if (t.norm() < 0.1) {  // all three parallel: a flat point, leave tangency
+                    continue;
+                }
+                fix(v, feature_frame(t.normalized(), a, b));
+            } else {
+                fix(v, corner_frame(n1, n2, n3));
+            }
         } else {
             cons.kind[v] = ConstraintKind::Free;  // 2 or >= 4 faces: the field decides (singular point)
         }
