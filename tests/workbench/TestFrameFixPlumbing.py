@@ -9,7 +9,7 @@ import unittest
 import FreeCAD
 import Part
 
-from framefix_wb import analysis, job, report, runner, shapes, sizing
+from framefix_wb import analysis, backend, job, report, runner, shapes, sizing
 from framefix_wb.errors import BackendError, SelectionError
 from framefix_wb.objects.properties import report_of
 
@@ -139,6 +139,13 @@ class FailingBackends(unittest.TestCase):
     def test_rejected_input_shows_the_backends_message(self):
         with self.assertRaisesRegex(BackendError, r"rejected the input in stage load: .*2 solids"):
             self.run_fake("reject.sh")
+
+    def test_internal_error_shows_the_backends_message(self):
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, backend=backend.Backend(["true"]))
+        j.add_line("framefix: internal error: unknown exception\n")
+        with self.assertRaisesRegex(BackendError, "internal error: unknown exception"):
+            j.finish(3)
+        j.cleanup()
 
     def test_missing_backend_says_what_to_set(self):
         os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, "does-not-exist")

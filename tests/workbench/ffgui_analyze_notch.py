@@ -21,6 +21,7 @@ def scenario(h):
     part.Shape = Part.read(os.path.join(SAMPLES, "notch.step"))
     doc.recompute()
     h.show_all()
+    h.clear_report_view()
     yield 0.5
     FreeCADGui.Selection.addSelection(part)
     FreeCADGui.runCommand("FrameFix_Analyze")
@@ -45,6 +46,7 @@ def scenario(h):
     h.button(QtWidgets.QDialogButtonBox.Ok).click()
     yield h.until(lambda: AnalyzePanel.active is None, 10, "OK to close the panel")
     FreeCADGui.Selection.clearSelection()
+    h.expand_tree()
     yield 0.5
     h.screenshot("analyze_notch_closed")
 

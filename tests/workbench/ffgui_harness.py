@@ -18,6 +18,7 @@ import FreeCADGui
 from PySide2 import QtCore, QtGui, QtWidgets
 
 OUT = os.environ.get("FRAMEFIX_TEST_OUT", "/tmp")
+LOG = sys.__stderr__  # the terminal, not FreeCAD's report view (it is in the screenshots)
 
 
 class Failure(Exception):
@@ -36,9 +37,9 @@ class Harness:
     def check(self, condition, message):
         if not condition:
             self.failures.append(message)
-            print("FAIL: " + message, file=sys.stderr)
+            print("FAIL: " + message, file=LOG)
         else:
-            print("ok: " + message.split(":")[0], file=sys.stderr)
+            print("ok: " + message.split(":")[0], file=LOG)
 
     def until(self, condition, timeout=30.0, what="condition"):
         return Until(condition, timeout, what)
@@ -64,13 +65,24 @@ class Harness:
             if dock.objectName() == "Combo View":
                 mw.resizeDocks([dock], [width], QtCore.Qt.Horizontal)
 
+    def clear_report_view(self):
+        """Start the report view afresh (FreeCAD's start-up warnings are not ours)."""
+        for dock in self.main_window().findChildren(QtWidgets.QDockWidget):
+            if dock.objectName() == "Report view":
+                for text in dock.findChildren(QtWidgets.QTextEdit):
+                    text.clear()
+
+    def expand_tree(self):
+        for tree in self.main_window().findChildren(QtWidgets.QTreeWidget):
+            tree.expandAll()
+
     def screenshot(self, name):
         """The whole main window (the 3D view included) as OUT/<name>.png; returns the path."""
         path = os.path.join(OUT, name + ".png")
         mw = self.main_window()
         QtWidgets.QApplication.processEvents()
         QtGui.QGuiApplication.primaryScreen().grabWindow(mw.winId()).save(path)
-        print("screenshot: " + path, file=sys.stderr)
+        print("screenshot: " + path, file=LOG)
         return path
 
 
@@ -81,7 +93,7 @@ def run(scenario, watchdog_s=300.0):
     start = time.monotonic()
 
     def finish(code):
-        sys.stderr.flush()
+        LOG.flush()
         sys.stdout.flush()
         os._exit(code)
 
@@ -98,12 +110,12 @@ def run(scenario, watchdog_s=300.0):
             nxt = next(steps)
         except StopIteration:
             for f in h.failures:
-                print("FAILED: " + f, file=sys.stderr)
-            print("GUI scenario: %d failure(s)" % len(h.failures), file=sys.stderr)
+                print("FAILED: " + f, file=LOG)
+            print("GUI scenario: %d failure(s)" % len(h.failures), file=LOG)
             finish(1 if h.failures else 0)
             return
         except Exception:
-            traceback.print_exc()
+            traceback.print_exc(file=LOG)
             finish(1)
             return
         if isinstance(nxt, Until):

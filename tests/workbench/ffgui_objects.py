@@ -7,7 +7,6 @@ import tempfile
 
 import FreeCAD
 import FreeCADGui
-import Part
 from PySide2 import QtWidgets
 
 import ffgui_harness

@@ -19,7 +19,7 @@ DEFAULT_TIMEOUT_S = 1800.0
 # Share of the whole run each backend stage takes, measured roughly on the samples.
 STAGE_WEIGHTS = (("load", 0.05), ("mesh", 0.25), ("field", 0.55), ("singularities", 0.15))
 _PROGRESS = re.compile(r"^progress\s+(\w+)\s+([0-9.eE+-]+)\s*$")
-_ERROR = re.compile(r"^framefix: error \[(\w*)\]: (.*)$")
+_ERROR = re.compile(r"^framefix: (?:error \[(\w*)\]|internal error): (.*)$")
 
 
 def parse_progress(line):
@@ -75,7 +75,7 @@ class AnalysisJob:
         self.lines.append(line)
         m = _ERROR.match(line)
         if m:
-            self.error_line = (m.group(1), m.group(2))
+            self.error_line = (m.group(1) or "", m.group(2))
         return parse_progress(line)
 
     def _tail(self, n=5):
