@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <sys/resource.h>
+
 #include "framefix/core/error.h"
 #include "framefix/core/memory.h"
 #include "framefix/frame_field/frame_field.h"
@@ -14,6 +16,13 @@
 #include "framefix/mesh/mesh_io.h"
 
 using namespace framefix;
+
+// User + system time of the process (all threads): the 2 cores are shared, so wall time is noisy.
+static double cpu_seconds() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -36,7 +45,9 @@ int main(int argc, char** argv) {
         o.solver = solver == "ldlt" ? SparseSolver::SimplicialLDLT
                    : solver == "cholmod" ? SparseSolver::Cholmod : SparseSolver::ConjugateGradient;
         if (argc > 4) o.max_iterations = std::atoi(argv[4]);
+        const double cpu0 = cpu_seconds();
         const FrameField f = solve_frame_field(cf.mesh, topo, cons, o);
+        const double cpu_solve = cpu_seconds() - cpu0;
         int fixed = 0, aligned = 0;
         for (ConstraintKind k : cons.kind) {
             fixed += k == ConstraintKind::Fixed;
@@ -48,8 +59,11 @@ int main(int argc, char** argv) {
         std::printf("load %.3f s  topology+constraints %.3f s\n", t_load, t_prep);
         std::printf("init %.3f s  smoothing %.3f s  total(init+smoothing) %.3f s\n", f.seconds_init, f.seconds_smooth,
                     f.seconds_init + f.seconds_smooth);
-        std::printf("iterations %d converged %d linear_iterations %d\n", f.iterations, int(f.converged),
+        std::printf("cpu(init+smoothing, all threads) %.3f s\n", cpu_solve);
+        std::printf("iterations %d converged %d linear_iterations %d\nper solve:", f.iterations, int(f.converged),
                     f.linear_iterations);
+        for (int it : f.solve_iterations) std::printf(" %d", it);
+        std::printf("\n");
         std::printf("energy init %.6g final %.6g\n", f.initial_energy, f.energy);
         std::printf("peak_memory_mb %.1f\n", peak_memory_mb());
         return 0;

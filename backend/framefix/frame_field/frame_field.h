@@ -58,6 +58,7 @@ struct FrameField {
     std::vector<double> change_history;  // one entry per MBO iteration: |q_k - q_k-1|_M / |q_k|_M
     int iterations = 0;              // MBO iterations run
     int linear_iterations = 0;       // CG iterations summed over all solves (direct: number of solves)
+    std::vector<int> solve_iterations;  // per solve: linear init, then one per diffusion
     bool converged = false;          // stopped on the change test (not on max_iterations)
     double seconds_init = 0;         // assembly + constraints + linear solve + projection, wall clock
     double seconds_smooth = 0;       // MBO (+ relaxed step), wall clock

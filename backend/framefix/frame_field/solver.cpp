@@ -98,6 +98,7 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
     FrameCoefficients x = FrameCoefficients::Zero(nv, 9);
     const LinearSolveStats init = solver.solve(0.0, 1.0, -Kc, x, o.cg_tolerance);
     out.linear_iterations += init.iterations;
+    out.solve_iterations.push_back(init.iterations);
     FrameCoefficients q = space.c + x;
     std::vector<Eigen::Matrix3d> R(nv, Eigen::Matrix3d::Identity());
     project_field(space, q, R, false, threads);
@@ -115,14 +116,24 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
     // smaller tau, so a rough solve suffices (measured on the notch: 1e-3 changes the final
     // energy by 4e-6 relative and saves 30 % of the CG iterations).
     const double coarse_tol = std::min(1e3 * o.cg_tolerance, std::max(o.cg_tolerance, 1e-3));
+    // Warm start: the input plus the last diffusion increment scaled by tau / tau_prev (for small
+    // tau the increment ~ -tau M^-1 K q, and q moves little between iterations). Measured on the
+    // notch at 59k tets: 1301 -> 813 CG iterations, same MBO iterations, energy within 1e-5.
+    FrameCoefficients increment;  // last diffusion output - input, in V
+    double last_tau = 0;
     auto diffuse = [&](const FrameCoefficients& from, double tau) {
         // (M + tau K)(c + x) = M from  =>  (M + tau K) x = M (from - c) - tau K c
         x = from - space.c;
         rhs = sys.mass.asDiagonal() * x - tau * Kc;
+        if (increment.rows()) x += (tau / last_tau) * increment;
         const double tol = tau > tau_floor ? coarse_tol : o.cg_tolerance;
         const LinearSolveStats st = solver.solve(1.0, tau, rhs, x, tol);
         out.linear_iterations += st.iterations;
-        return FrameCoefficients(space.c + x);
+        out.solve_iterations.push_back(st.iterations);
+        FrameCoefficients result = space.c + x;
+        increment = result - from;
+        last_tau = tau;
+        return result;
     };
     for (int k = 1; k <= o.max_iterations; ++k) {
         const double tau = std::max(tau0 / std::pow(double(k), o.tau_power), tau_floor);
