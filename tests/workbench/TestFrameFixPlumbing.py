@@ -136,6 +136,12 @@ class FailingBackends(unittest.TestCase):
         with self.assertRaisesRegex(BackendError, "not valid JSON"):
             self.run_fake("garbage.sh")
 
+    def test_output_flood_ends_in_missing_report(self):
+        start = time.monotonic()
+        with self.assertRaisesRegex(BackendError, "wrote no report.json"):
+            self.run_fake("flood.sh")
+        self.assertLess(time.monotonic() - start, 60.0)
+
     def test_rejected_input_shows_the_backends_message(self):
         with self.assertRaisesRegex(BackendError, r"rejected the input in stage load: .*2 solids"):
             self.run_fake("reject.sh")

@@ -54,14 +54,15 @@ def scenario(h):
     panel = AnalyzePanel.active
     h.check(panel.size.value() > 0 and "tets" in panel.estimate.text(),
             "default size and estimate shown: %s" % panel.estimate.text())
-    os.environ["FRAMEFIX_TIMEOUT"] = "3"
-    for fake, expected in (("segv.sh", "crashed (killed by SIGSEGV)"),
-                           ("hang.sh", "did not finish within 3 s"),
-                           ("garbage.sh", "not valid JSON"),
-                           ("reject.sh", "2 solids; select one solid")):
+    for fake, expected, timeout in (("segv.sh", "crashed (killed by SIGSEGV)", 60),
+                                    ("hang.sh", "did not finish within 3 s", 3),
+                                    ("garbage.sh", "not valid JSON", 60),
+                                    ("flood.sh", "wrote no report.json", 60),
+                                    ("reject.sh", "2 solids; select one solid", 60)):
         os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, fake)
+        os.environ["FRAMEFIX_TIMEOUT"] = str(timeout)
         h.button(Apply).click()
-        yield h.until(lambda: not panel.runner.is_running(), 20, fake + " to end")
+        yield h.until(lambda: not panel.runner.is_running(), 70, fake + " to end")
         yield 0.2
         text = panel.summary.text()
         h.check(expected in text, "%s: the panel shows %r: %s" % (fake, expected, text))

@@ -33,13 +33,15 @@ class Until:
 class Harness:
     def __init__(self):
         self.failures = []
+        self.start = time.monotonic()
 
     def check(self, condition, message):
         if not condition:
             self.failures.append(message)
             print("FAIL: " + message, file=LOG)
         else:
-            print("ok: " + message.split(":")[0], file=LOG)
+            print("ok (%.1f s): %s" % (time.monotonic() - self.start, message.split(":")[0]),
+                  file=LOG)
 
     def until(self, condition, timeout=30.0, what="condition"):
         return Until(condition, timeout, what)

@@ -5,6 +5,7 @@ AnalysisJob the same way: start `job.argv` with `job.env`, feed every output lin
 `job.add_line`, then call `job.finish(exit_code, crashed)` for the checked report.
 The user's shape only ever leaves FreeCAD as a BREP file in the job's own temp folder.
 """
+import collections
 import os
 import re
 import shutil
@@ -18,6 +19,8 @@ from .report import load_report
 DEFAULT_TIMEOUT_S = 1800.0
 # Share of the whole run each backend stage takes, measured roughly on the samples.
 STAGE_WEIGHTS = (("load", 0.05), ("mesh", 0.25), ("field", 0.55), ("singularities", 0.15))
+MAX_LINE = 4096  # longer output lines are cut: a backend printing binary garbage stays cheap
+KEPT_LINES = 500  # the last output lines kept for error messages
 _PROGRESS = re.compile(r"^progress\s+(\w+)\s+([0-9.eE+-]+)\s*$")
 _ERROR = re.compile(r"^framefix: (?:error \[(\w*)\]|internal error): (.*)$")
 
@@ -66,12 +69,12 @@ class AnalysisJob:
         if size:
             self.argv += ["--size", repr(float(size))]
         self.env = self.backend.environment()
-        self.lines = []  # every output line, for the log and for error messages
+        self.lines = collections.deque(maxlen=KEPT_LINES)  # the last output lines
         self.error_line = None  # (stage, message) of the backend's last `framefix: error` line
 
     def add_line(self, line):
         """Record one output line; returns (stage, fraction) if it is a progress line."""
-        line = line.rstrip("\r\n")
+        line = line.rstrip("\r\n")[:MAX_LINE]
         self.lines.append(line)
         m = _ERROR.match(line)
         if m:

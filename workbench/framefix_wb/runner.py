@@ -12,6 +12,7 @@ import threading
 import time
 
 from .errors import BackendError
+from .job import MAX_LINE
 
 
 def _kill_group(proc):
@@ -23,7 +24,7 @@ def _kill_group(proc):
 
 
 def _read_lines(stream, lines):
-    for raw in iter(stream.readline, b""):
+    for raw in iter(lambda: stream.readline(MAX_LINE), b""):
         lines.put(raw.decode("utf-8", "replace"))
     lines.put(None)
 

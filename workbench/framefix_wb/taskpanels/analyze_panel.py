@@ -4,6 +4,7 @@ Apply runs the backend in a QProcess (ProcessRunner) and only then, in one trans
 or updates the analysis objects: a failed, cancelled or hung run leaves the document as it
 was. Apply is refused while a run is going; Cancel kills it.
 """
+import collections
 import html
 import time
 
@@ -42,7 +43,8 @@ class AnalyzePanel:
         self.analysis = analysis_obj
         self.runner = ProcessRunner()
         self.runner.progress.connect(self._on_progress)
-        self.runner.line.connect(self._log)
+        self.runner.lines.connect(self._queue_output)
+        self.pending = collections.deque(maxlen=300)  # backend output not yet in the log
         self.runner.succeeded.connect(self._on_succeeded)
         self.runner.failed.connect(self._on_failed)
         self.job = self.digest = self.size_run = None
@@ -254,10 +256,21 @@ class AnalyzePanel:
                 s["invalid_nodes"], style.legend_html(style.CURVE_COLORS, kinds),
                 style.legend_html(style.NODE_COLORS)))
 
+    def _queue_output(self, text):
+        """Backend output goes to the log from the ticker: a flood costs one layout a tick."""
+        self.pending.extend(text.split("\n"))
+
+    def _flush_output(self):
+        if self.pending and not self.closed:
+            self.log.appendPlainText("\n".join(self.pending))
+            self.pending.clear()
+
     def _log(self, text):
+        self._flush_output()
         self.log.appendPlainText(text)
 
     def _tick(self):
+        self._flush_output()
         if self.runner.is_running():
             self.elapsed.setText("Elapsed %.1f s" % (time.monotonic() - self.started))
         else:

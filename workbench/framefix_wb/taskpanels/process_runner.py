@@ -15,14 +15,14 @@ import signal
 from PySide2 import QtCore
 
 from ..errors import BackendError
-from ..job import overall_fraction
+from ..job import MAX_LINE, overall_fraction
 
 SETSID = "/usr/bin/setsid"
 
 
 class ProcessRunner(QtCore.QObject):
     progress = QtCore.Signal(str, float)  # stage, overall fraction 0..1
-    line = QtCore.Signal(str)  # one line of the backend's output
+    lines = QtCore.Signal(str)  # the backend's new output lines, one batch per read
     succeeded = QtCore.Signal(object)  # the checked report (dict)
     failed = QtCore.Signal(str)  # a message for the user
 
@@ -88,14 +88,20 @@ class ProcessRunner(QtCore.QObject):
             return
         self._buffer += bytes(self.process.readAllStandardOutput())
         *lines, self._buffer = self._buffer.split(b"\n")
-        for raw in lines:
-            text = raw.decode("utf-8", "replace")
-            self.line.emit(text)
-            progress = self.job.add_line(text)
-            if progress:
-                fraction = overall_fraction(*progress)
-                if fraction is not None:
-                    self.progress.emit(progress[0], fraction)
+        if len(self._buffer) > MAX_LINE:  # no newline in sight: cut it into a line
+            lines.append(self._buffer[:MAX_LINE])
+            self._buffer = b""
+        if not lines:
+            return
+        texts = [raw.decode("utf-8", "replace") for raw in lines]
+        last = None  # a flood of progress lines moves the bar once per read
+        for text in texts:
+            last = self.job.add_line(text) or last
+        # a flood shows its end, long lines their start: the log must stay cheap to lay out
+        self.lines.emit("\n".join(t[:300] for t in texts[-200:]))
+        fraction = overall_fraction(*last) if last else None
+        if fraction is not None:
+            self.progress.emit(last[0], fraction)
 
     def _on_output(self, p):
         if p is self.process:
