@@ -1,0 +1,98 @@
+#pragma once
+// Block decomposition of a (corrected) frame field (ALGORITHMS.md §8 with section 0's §8 rules):
+// separatrix sheets are traced from the singular curves (valence k: k sheets), from the concave
+// feature curves (2 inward sheets) and from the snapped paths of the boundary snapping (2 inward
+// sheets); the mesh edges the sheets cut split the vertices into components, the tets take their
+// vertices' majority label, and the labelling is cleaned until every block boundary is a closed
+// manifold. Each block is then checked to be a topological hexahedron (6 disk faces, 12 edges, 8
+// corners of degree 3) and each pair of neighbouring blocks to share one whole face, corner to
+// corner. Flat block edges/corners (zero-Jacobian after snapping) are found with the normal-angle
+// proxy of section 0 and reported, not refined (§8.4 is not implemented). No hex mesh is built.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framefix/corrections/snapping.h"
+#include "framefix/frame_field/frame_field.h"
+#include "framefix/mesh/features.h"
+#include "framefix/mesh/tet_mesh.h"
+#include "framefix/mesh/tet_topology.h"
+#include "framefix/singularities/singularity_graph.h"
+
+namespace framefix {
+
+struct BlockOptions {
+    double step = 0.4;             // streamline RK4 step, in mean edge lengths h
+    double seed_spacing = 1;       // seeds along singular curves, in h
+    double seed_radius = 0.5;      // radius of the circle on which separatrix directions are found, in h
+                                   // (section 0: 1 h fails when a curve is 1-2 h from the wall)
+    double stop_distance = 1.5;    // streamlines stop this close to a singular curve, in h
+    double match_deg = 40;         // consecutive seeds' directions pair into a ribbon below this angle
+    double overshoot = 1;          // lateral widening of feature/snapped-path ribbons, in h (rule 6)
+    double tube_radius = 1;        // mesh edges this close to a singular curve are cut, in h
+    int min_component_vertices = 8;   // smaller vertex components adopt a neighbour's label
+    double min_piece_fraction = 0.005;  // face-connected pieces below this fraction of the tets merge
+    double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
+    double thin_width = 0.75;      // patches with 2 area / perimeter below this merge (staircase strips), in h
+    double bevel_width = 2.5;      // strip-like patches below this width between two ~90 deg flanks split, in h
+    double conform_tolerance = 2.5;  // corner positions of a shared face must match within this, in h
+    double flat_deg = 35;          // a block edge whose two face normals are closer than this is flat
+    int threads = 0;               // OpenMP threads, 0 = all
+};
+
+struct BlockInfo {
+    std::vector<int> tets;         // tet ids of the block, ascending
+    double volume = 0;             // model units^3
+    bool valid = false;            // topological hexahedron with a manifold sphere boundary
+    int faces = 0, edges = 0, corners = 0;  // counts on the block's boundary after patch cleaning
+    int euler = 0;                 // Euler characteristic of the boundary surface (2 for a sphere)
+    bool manifold = false;         // every boundary edge in exactly two boundary triangles
+    int flat_edges = 0;            // block edges whose face normals are < flat_deg apart
+    int flat_corners = 0;          // corners with two incident faces whose normals are < flat_deg apart
+    std::vector<int> neighbours;   // neighbouring block ids, ascending
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // mean of the block's vertices, model units
+    std::string reason;            // empty if valid, else the first failed test ("faces 5", ...)
+};
+
+struct BlockPair {                 // two blocks that share boundary
+    int a = -1, b = -1;            // block ids, a < b
+    bool conforming = false;       // exactly one shared face on each side, corners matching
+    std::string reason;            // why not
+};
+
+struct SheetSoup {                 // the separatrix sheets, for display (VTK)
+    Points points;                 // #P x 3, model units
+    Triangles triangles;           // #S x 3 indices into points
+    Eigen::VectorXi source;        // #S: source id of each triangle (index into `source_kind`)
+    std::vector<std::string> source_kind;  // per source: "singular:<curve id>", "concave:<B-rep edge>",
+                                           // "snapped:<path index>"
+};
+
+struct SheetStats {
+    int sources = 0, streamlines = 0, ribbons = 0, cross_ribbons = 0;
+    int left_solid = 0, reached_singularity = 0, sharp_turn = 0, limit_cycle = 0, max_steps = 0, start_outside = 0;
+    int cut_edges = 0;             // mesh edges cut by sheets or the singular-curve tubes
+};
+
+struct BlockDecomposition {
+    Eigen::VectorXi tet_block;     // #T block id of each tet, 0..count-1
+    int count = 0;                 // number of blocks
+    std::vector<BlockInfo> blocks; // #count
+    int valid = 0;                 // blocks that are topological hexahedra
+    std::vector<BlockPair> neighbour_pairs;  // every pair of blocks sharing boundary triangles
+    int conforming_pairs = 0, pairs = 0;
+    int flat_corners = 0, flat_edges = 0;    // summed over blocks (a shared edge counts in each block)
+    SheetSoup sheets;
+    SheetStats stats;
+    double h = 0;                  // mean mesh edge length used as the unit of the options
+    double seconds = 0;            // total wall clock
+    double seconds_sheets = 0, seconds_partition = 0, seconds_validation = 0;
+};
+
+// Throws framefix::Error("blocks") when the field or graph does not belong to the mesh.
+BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                                const FrameField& field, const SingularityGraph& graph,
+                                const std::vector<SnappedPath>& paths, const BlockOptions& options = {});
+
+}  // namespace framefix

@@ -1,0 +1,31 @@
+#pragma once
+// From sheets to a tet labelling (section 0, §8.2 items 4-5 and rule 7). Internal to blocks.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framefix/blocks/blocks.h"
+
+namespace framefix {
+
+// #Ed flags (topology edge space): the mesh edge crosses or touches a sheet triangle.
+std::vector<char> cut_by_sheets(const TetMesh& mesh, const TetTopology& topo, const SheetSoup& sheets, int threads);
+
+// Sets the flag of every edge passing within `radius` of a polyline point set (#S x 3): the k
+// sheets of a singular curve meet on a noisy polyline, the tube closes them.
+void cut_near_polylines(const TetMesh& mesh, const TetTopology& topo, const Points& polyline_points,
+                        double radius, std::vector<char>& cut);
+
+// Vertex components over uncut edges -> small ones adopt neighbours -> tets by majority ->
+// face-connected pieces -> small pieces merge -> spike smoothing. Returns #T labels 0..n-1.
+Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<char>& cut,
+                               const BlockOptions& options);
+
+// Rule 7: moves the minority side at non-manifold block-boundary edges and pinched vertices until
+// every block boundary is a manifold (<= 10 passes each). Returns relabelled, compacted labels.
+Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi labels);
+
+// Relabels to 0..n-1 in order of first appearance; returns n.
+int compact_labels(Eigen::VectorXi& labels);
+
+}  // namespace framefix

@@ -1,0 +1,212 @@
+#include "framefix/blocks/sheet_sources.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "framefix/frame_field/projection.h"
+
+namespace framefix {
+
+namespace {
+
+Eigen::Vector3d axis(const FrameField& field, int vert, int k) {
+    return field.axes.row(vert).segment<3>(3 * k).transpose();
+}
+
+Eigen::Vector3d unit_or_zero(const Eigen::Vector3d& v) {
+    const double n = v.norm();
+    return n > 1e-30 ? Eigen::Vector3d(v / n) : Eigen::Vector3d::Zero();
+}
+
+// Zero crossings of the deviation angle between e_r and the closest frame axis normal to the
+// curve, sampled on a circle (72 samples) around `center`.
+std::vector<Eigen::Vector3d> separatrix_directions(const TetMesh& mesh, const FrameField& field,
+                                                   const TetLocator& locator, const Eigen::Vector3d& center,
+                                                   const Eigen::Vector3d& tangent, double radius) {
+    constexpr int kSamples = 72;
+    const Eigen::Vector3d e1 =
+        unit_or_zero(tangent.cross(std::abs(tangent.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY()));
+    const Eigen::Vector3d e2 = tangent.cross(e1);
+    std::vector<double> dev(kSamples, NAN), theta(kSamples);
+    int tet = -1;
+    Eigen::Matrix3d warm;
+    bool has_warm = false;
+    for (int s = 0; s < kSamples; ++s) {
+        theta[s] = 2 * M_PI * s / kSamples;
+        const Eigen::Vector3d er = std::cos(theta[s]) * e1 + std::sin(theta[s]) * e2, et = tangent.cross(er);
+        const TetLocation at = locator.locate(center + radius * er, tet);
+        if (at.tet < 0) continue;
+        tet = at.tet;
+        const Eigen::Vector4d w = at.bary.cwiseMax(0.0) / at.bary.cwiseMax(0.0).sum();
+        SH9 q = SH9::Zero();
+        for (int lv = 0; lv < 4; ++lv) q += w[lv] * field.coefficients.row(mesh.tets(at.tet, lv)).transpose();
+        const ProjectedFrame f = project_frame_from(q, has_warm ? &warm : nullptr);
+        warm = f.rotation, has_warm = true;
+        double best = -1;
+        Eigen::Vector3d a = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::Vector3d c = f.rotation.col(k);
+            if (std::abs(c.dot(tangent)) >= 0.7) continue;  // the axis along the curve
+            if (std::abs(c.dot(er)) > best) best = std::abs(c.dot(er)), a = c.dot(er) < 0 ? Eigen::Vector3d(-c) : c;
+        }
+        if (best >= 0) dev[s] = std::atan2(a.dot(et), a.dot(er)) * 180 / M_PI;
+    }
+    std::vector<Eigen::Vector3d> zeros;
+    for (int s = 0; s < kSamples; ++s) {
+        const double d0 = dev[s], d1 = dev[(s + 1) % kSamples];
+        if (std::isnan(d0) || std::isnan(d1) || d0 * d1 > 0 || std::abs(d0 - d1) >= 45) continue;
+        const double w = d0 != d1 ? d0 / (d0 - d1) : 0;
+        const double t = theta[s] + w * 2 * M_PI / kSamples;
+        const Eigen::Vector3d z = std::cos(t) * e1 + std::sin(t) * e2;
+        bool dup = false;
+        for (const auto& y : zeros) dup |= z.dot(y) >= 0.99;  // an exact zero on a sample is seen twice
+        if (!dup) zeros.push_back(z);
+    }
+    return zeros;
+}
+
+}  // namespace
+
+std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
+                                          const TetLocator& locator, double h, const BlockOptions& options) {
+    std::vector<SheetSource> out;
+    for (const SingularCurve& c : graph.curves) {
+        if (c.kind == CurveKind::Other || c.faces.size() < 3 || c.points.rows() < 2) continue;
+        const Points& P = c.points;
+        const int n = int(P.rows());
+        std::vector<double> arc(n, 0);
+        for (int i = 1; i < n; ++i) arc[i] = arc[i - 1] + (P.row(i) - P.row(i - 1)).norm();
+        const int ns = std::max(2, int(std::lround(arc.back() / (options.seed_spacing * h))) + 1);
+        SheetSource src;
+        src.kind = SheetSource::Singular;
+        src.name = "singular:" + std::to_string(c.id);
+        int last = -1;
+        for (int s = 0; s < ns; ++s) {
+            const double target = arc.back() * s / (ns - 1);
+            const int i = std::min(int(std::lower_bound(arc.begin(), arc.end(), target) - arc.begin()), n - 1);
+            if (i == last) continue;
+            last = i;
+            SheetSeed seed;
+            seed.point = P.row(i).transpose();
+            seed.tangent = unit_or_zero((P.row(std::min(i + 2, n - 1)) - P.row(std::max(i - 2, 0))).transpose());
+            seed.directions = separatrix_directions(mesh, field, locator, seed.point, seed.tangent, options.seed_radius * h);
+            src.seeds.push_back(std::move(seed));
+        }
+        for (int e = 0; e < 2; ++e)
+            src.boundary_end[e] = !c.closed && c.ends[e] >= 0 && c.ends[e] < int(graph.nodes.size()) &&
+                                  graph.nodes[c.ends[e]].boundary;
+        out.push_back(std::move(src));
+    }
+    return out;
+}
+
+std::vector<SheetSource> feature_sources(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                                         const FrameField& field, const std::vector<SnappedPath>& paths) {
+    const int nv = mesh.num_vertices();
+    // Outward area normals per (vertex, B-rep face) and per vertex; boundary triangles per mesh edge.
+    std::unordered_map<long long, Eigen::Vector3d> tag_normal;
+    std::vector<Eigen::Vector3d> vert_normal(nv, Eigen::Vector3d::Zero());
+    std::unordered_map<long long, std::vector<int>> edge_tags;
+    auto ekey = [nv](int a, int b) { return (long long)std::min(a, b) * nv + std::max(a, b); };
+    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) {
+        const Eigen::Vector3i f = mesh.boundary_faces.row(b).transpose();
+        const Eigen::Vector3d n = (mesh.points.row(f[1]) - mesh.points.row(f[0]))
+                                      .cross(mesh.points.row(f[2]) - mesh.points.row(f[0]))
+                                      .transpose();
+        const int tag = mesh.face_tags[b];
+        for (int k = 0; k < 3; ++k) {
+            auto [it, fresh] = tag_normal.try_emplace((long long)f[k] * 100000 + tag, n);
+            if (!fresh) it->second += n;
+            vert_normal[f[k]] += n;
+            edge_tags[ekey(f[k], f[(k + 1) % 3])].push_back(tag);
+        }
+    }
+    std::vector<char> on_feature(nv, 0);
+    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
+        if (features.valence_of(mesh.edge_tags[e]) > 0) on_feature[mesh.feature_edges(e, 0)] = on_feature[mesh.feature_edges(e, 1)] = 1;
+
+    std::vector<SheetSource> out;
+    std::map<int, std::vector<int>> concave;  // B-rep edge -> its mesh feature edges
+    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
+        if (features.valence_of(mesh.edge_tags[e]) == 3) concave[mesh.edge_tags[e]].push_back(e);
+    for (const auto& [tag, edges] : concave) {
+        // Order the curve's vertices into a chain (open: from a degree-1 end).
+        std::unordered_map<int, std::vector<int>> adj;
+        std::map<int, int> face_count;
+        for (int e : edges) {
+            const int a = mesh.feature_edges(e, 0), b = mesh.feature_edges(e, 1);
+            adj[a].push_back(b), adj[b].push_back(a);
+            for (int t : edge_tags[ekey(a, b)]) face_count[t] += 1;
+        }
+        std::vector<std::pair<int, int>> by_count;
+        for (auto [t, c] : face_count) by_count.push_back({c, t});
+        std::sort(by_count.rbegin(), by_count.rend());
+        if (by_count.size() < 2) continue;
+        int start = adj.begin()->first;
+        for (const auto& [v, nb] : adj)
+            if (nb.size() == 1) { start = v; break; }
+        std::vector<int> chain{start};
+        for (int prev = -1, cur = start;;) {
+            int next = -1;
+            for (int w : adj[cur])
+                if (w != prev && (chain.size() < 2 || w != chain.front())) { next = w; break; }
+            if (next < 0 || std::find(chain.begin(), chain.end(), next) != chain.end()) break;
+            chain.push_back(next), prev = cur, cur = next;
+        }
+        SheetSource src;
+        src.kind = SheetSource::Concave;
+        src.name = "concave:" + std::to_string(tag);
+        src.boundary_end[0] = src.boundary_end[1] = true;
+        const int m = int(chain.size());
+        for (int i = 0; i < m; ++i) {
+            const int v = chain[i];
+            SheetSeed seed;
+            seed.point = mesh.points.row(v).transpose();
+            seed.tangent = unit_or_zero((mesh.points.row(chain[std::min(i + 1, m - 1)]) -
+                                         mesh.points.row(chain[std::max(i - 1, 0)])).transpose());
+            for (int s = 0; s < 2; ++s) {
+                auto it = tag_normal.find((long long)v * 100000 + by_count[s].second);
+                if (it == tag_normal.end() || it->second.norm() == 0) continue;
+                const Eigen::Vector3d inward = -it->second.normalized();
+                int best = 0;
+                for (int k = 1; k < 3; ++k)
+                    if (std::abs(axis(field, v, k).dot(inward)) > std::abs(axis(field, v, best).dot(inward))) best = k;
+                const Eigen::Vector3d a = axis(field, v, best);
+                seed.directions.push_back(a.dot(inward) < 0 ? Eigen::Vector3d(-a) : a);
+            }
+            src.seeds.push_back(std::move(seed));
+        }
+        out.push_back(std::move(src));
+    }
+
+    for (size_t pi = 0; pi < paths.size(); ++pi) {
+        const std::vector<int>& V = paths[pi].vertices;
+        const int m = int(V.size());
+        if (m < 2) continue;
+        SheetSource src;
+        src.kind = SheetSource::Snapped;
+        src.name = "snapped:" + std::to_string(pi);
+        src.boundary_end[0] = src.boundary_end[1] = true;
+        for (int i = 0; i < m; ++i) {
+            const int v = V[i];
+            // An end on a feature curve has the normal of neither face: use its path neighbour's.
+            const int nvert = on_feature[v] ? V[i == 0 ? 1 : (i == m - 1 ? m - 2 : i)] : v;
+            const Eigen::Vector3d n = unit_or_zero(vert_normal[nvert]);
+            SheetSeed seed;
+            seed.point = mesh.points.row(v).transpose();
+            seed.tangent = unit_or_zero((mesh.points.row(V[std::min(i + 1, m - 1)]) -
+                                         mesh.points.row(V[std::max(i - 1, 0)])).transpose());
+            for (int k = 0; k < 3; ++k) {
+                const Eigen::Vector3d a = axis(field, v, k);
+                if (std::abs(a.dot(n)) > 0.3) seed.directions.push_back(a.dot(n) > 0 ? Eigen::Vector3d(-a) : a);
+            }
+            src.seeds.push_back(std::move(seed));
+        }
+        out.push_back(std::move(src));
+    }
+    return out;
+}
+
+}  // namespace framefix

@@ -1,0 +1,38 @@
+#pragma once
+// Seeds and start directions of the separatrix sheets (section 0, §8.2 item 1). Internal to blocks.
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framefix/blocks/blocks.h"
+#include "framefix/streamlines/tet_locator.h"
+
+namespace framefix {
+
+struct SheetSeed {
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();    // on the source curve, model units
+    Eigen::Vector3d tangent = Eigen::Vector3d::Zero();  // unit tangent of the source curve
+    std::vector<Eigen::Vector3d> directions;            // unit start directions, one per sheet
+};
+
+struct SheetSource {
+    enum Kind { Singular, Concave, Snapped } kind = Singular;
+    std::string name;                  // "singular:<curve id>" | "concave:<B-rep edge>" | "snapped:<path>"
+    std::vector<SheetSeed> seeds;      // in curve order, about one per h
+    bool boundary_end[2] = {false, false};  // source end lies on the boundary: extend the sheet past it
+};
+
+// Singular curves (not kind Other, >= 3 triangles): seeds every seed_spacing h on the polyline,
+// directions = zeros of the radial deviation of the closest frame axis on a circle of radius
+// seed_radius h around the curve (valence k gives k zeros; seeds with fewer keep what they find).
+std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
+                                          const TetLocator& locator, double h, const BlockOptions& options);
+
+// Concave feature curves (valence 3): one seed per curve vertex, directions = the frame axes
+// closest to -n1, -n2 (the inward continuations of the two faces). Snapped paths: one seed per
+// path vertex, directions = the two axes with a.n < -0.3 (the 45 deg path frame's inward axes).
+std::vector<SheetSource> feature_sources(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                                         const FrameField& field, const std::vector<SnappedPath>& paths);
+
+}  // namespace framefix

@@ -1,0 +1,339 @@
+#include "framefix/blocks/sheets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace framefix {
+
+namespace {
+
+using Poly = std::vector<Eigen::Vector3d>;
+
+Poly to_poly(const Points& P) {
+    Poly out(P.rows());
+    for (int i = 0; i < int(P.rows()); ++i) out[i] = P.row(i).transpose();
+    return out;
+}
+
+double poly_length(const Poly& P) {
+    double l = 0;
+    for (size_t i = 1; i < P.size(); ++i) l += (P[i] - P[i - 1]).norm();
+    return l;
+}
+
+// Point at arc length s (clamped).
+Poly resample(const Poly& P, const std::vector<double>& at) {
+    Poly out;
+    out.reserve(at.size());
+    size_t i = 1;
+    double base = 0;
+    for (double s : at) {
+        while (i + 1 < P.size() && base + (P[i] - P[i - 1]).norm() < s) base += (P[i] - P[i - 1]).norm(), ++i;
+        if (P.size() < 2) { out.push_back(P.front()); continue; }
+        const double seg = (P[i] - P[i - 1]).norm();
+        const double w = seg > 0 ? std::clamp((s - base) / seg, 0.0, 1.0) : 0;
+        out.push_back(P[i - 1] + w * (P[i] - P[i - 1]));
+    }
+    return out;
+}
+
+std::vector<double> linspace(double a, double b, int n) {
+    std::vector<double> out(n);
+    for (int i = 0; i < n; ++i) out[i] = n > 1 ? a + (b - a) * i / (n - 1) : a;
+    return out;
+}
+
+struct Traced {
+    Poly points;
+    StopReason reason;
+};
+
+class SoupBuilder {
+public:
+    SoupBuilder(SheetSoup& soup, double h, double overshoot) : soup_(soup), h_(h), overshoot_(overshoot) {}
+
+    // Zip two streamlines: by normalised arc length if both left the solid, else up to the
+    // shorter one. `widen`: rule 6, widen the strip by overshoot h on both lateral sides.
+    // Returns the largest gap between the two resampled streamlines.
+    double ribbon(const Traced& A, const Traced& B, int source, bool widen) {
+        const double la = poly_length(A.points), lb = poly_length(B.points);
+        Poly Ar, Br;
+        if (A.reason == StopReason::LeftSolid && B.reason == StopReason::LeftSolid) {
+            const int m = int(std::ceil(std::max(la, lb) / (0.5 * h_))) + 2;
+            Ar = resample(A.points, linspace(0, la, m)), Br = resample(B.points, linspace(0, lb, m));
+        } else {
+            const double l = std::min(la, lb);
+            const int m = int(std::ceil(l / (0.5 * h_))) + 2;
+            Ar = resample(A.points, linspace(0, l, m)), Br = resample(B.points, linspace(0, l, m));
+        }
+        double gap = 0;
+        for (size_t k = 0; k < Ar.size(); ++k) gap = std::max(gap, (Ar[k] - Br[k]).norm());
+        if (widen && overshoot_ > 0) widen_strip(Ar, Br);
+        for (size_t k = 0; k + 1 < Ar.size(); ++k) {
+            add_triangle(Ar[k], Br[k], Ar[k + 1], source);
+            add_triangle(Br[k], Br[k + 1], Ar[k + 1], source);
+        }
+        return gap;
+    }
+
+    void finish() {
+        soup_.points.resize(Eigen::Index(points_.size()), 3);
+        for (size_t i = 0; i < points_.size(); ++i) soup_.points.row(Eigen::Index(i)) = points_[i].transpose();
+        soup_.triangles.resize(Eigen::Index(sources_.size()), 3);
+        soup_.source.resize(Eigen::Index(sources_.size()));
+        for (size_t t = 0; t < sources_.size(); ++t) {
+            soup_.triangles.row(Eigen::Index(t)) << int(3 * t), int(3 * t + 1), int(3 * t + 2);
+            soup_.source[Eigen::Index(t)] = sources_[t];
+        }
+    }
+
+private:
+    // Move each pair apart along A - B; rows where the two coincide borrow the nearest direction.
+    void widen_strip(Poly& A, Poly& B) const {
+        const double d = overshoot_ * h_;
+        std::vector<Eigen::Vector3d> u(A.size(), Eigen::Vector3d::Zero());
+        int first = -1;
+        for (size_t k = 0; k < A.size(); ++k) {
+            const Eigen::Vector3d g = A[k] - B[k];
+            if (g.norm() > 1e-9) u[k] = g.normalized(), first = first < 0 ? int(k) : first;
+            else if (k > 0) u[k] = u[k - 1];
+        }
+        if (first < 0) return;
+        for (int k = 0; k < first; ++k) u[k] = u[first];
+        for (size_t k = 0; k < A.size(); ++k) A[k] += d * u[k], B[k] -= d * u[k];
+    }
+    void add_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, int source) {
+        if ((b - a).cross(c - a).norm() < 1e-14) return;  // zero area: cuts nothing
+        points_.push_back(a), points_.push_back(b), points_.push_back(c);
+        sources_.push_back(source);
+    }
+
+    SheetSoup& soup_;
+    double h_, overshoot_;
+    std::vector<Eigen::Vector3d> points_;
+    std::vector<int> sources_;
+};
+
+void count(SheetStats& s, StopReason r) {
+    switch (r) {
+        case StopReason::LeftSolid: ++s.left_solid; break;
+        case StopReason::ReachedSingularity: ++s.reached_singularity; break;
+        case StopReason::SharpTurn: ++s.sharp_turn; break;
+        case StopReason::LimitCycle: ++s.limit_cycle; break;
+        case StopReason::MaxSteps: ++s.max_steps; break;
+        case StopReason::StartOutside: ++s.start_outside; break;
+    }
+}
+
+}  // namespace
+
+Points singular_points(const SingularityGraph& graph) {
+    int n = 0;
+    for (const SingularCurve& c : graph.curves)
+        if (c.kind != CurveKind::Other && c.faces.size() >= 3) n += int(c.points.rows());
+    Points out(n, 3);
+    int r = 0;
+    for (const SingularCurve& c : graph.curves)
+        if (c.kind != CurveKind::Other && c.faces.size() >= 3) out.middleRows(r, c.points.rows()) = c.points, r += int(c.points.rows());
+    return out;
+}
+
+SheetSoup build_sheets(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
+                       const std::vector<SheetSource>& sources, const Points& singular, double h,
+                       const BlockOptions& options, SheetStats& stats) {
+    SheetSoup soup;
+    for (const SheetSource& s : sources) soup.source_kind.push_back(s.name);
+    TraceOptions trace;
+    trace.step = options.step * h;
+    trace.stop_distance = options.stop_distance * h;
+    trace.singular_points = singular;
+    trace.threads = options.threads;
+    const double cos_match = std::cos(options.match_deg * M_PI / 180);
+
+    // 1. One streamline per (source, seed, direction); singular seeds start 0.5 h off the curve.
+    std::map<std::tuple<int, int, int>, int> index;
+    std::vector<Eigen::Vector3d> p0, v0, anchor;
+    for (int si = 0; si < int(sources.size()); ++si)
+        for (int ki = 0; ki < int(sources[si].seeds.size()); ++ki) {
+            const SheetSeed& seed = sources[si].seeds[ki];
+            const double off = sources[si].kind == SheetSource::Singular ? 0.5 * h : 0.02 * h;
+            for (int di = 0; di < int(seed.directions.size()); ++di) {
+                index[{si, ki, di}] = int(p0.size());
+                p0.push_back(seed.point + off * seed.directions[di]), v0.push_back(seed.directions[di]);
+                anchor.push_back(seed.point);
+            }
+        }
+    auto run = [&](const std::vector<Eigen::Vector3d>& P, const std::vector<Eigen::Vector3d>& V,
+                   const std::vector<Eigen::Vector3d>* prefix) {
+        Points seeds(Eigen::Index(P.size()), 3), dirs(Eigen::Index(P.size()), 3);
+        for (size_t i = 0; i < P.size(); ++i) seeds.row(Eigen::Index(i)) = P[i].transpose(), dirs.row(Eigen::Index(i)) = V[i].transpose();
+        std::vector<Streamline> raw = trace_streamlines(mesh, field, locator, seeds, dirs, trace);
+        std::vector<Traced> out(raw.size());
+        for (size_t i = 0; i < raw.size(); ++i) {
+            count(stats, raw[i].reason);
+            out[i].reason = raw[i].reason;
+            if (raw[i].reason == StopReason::StartOutside) continue;
+            out[i].points = to_poly(raw[i].points);
+            if (prefix) out[i].points.insert(out[i].points.begin(), (*prefix)[i]);
+            // A streamline that left the solid ends on the boundary: go 0.25 h beyond so that the
+            // mesh edges next to the boundary are cut too.
+            const Poly& q = out[i].points;
+            if (raw[i].reason == StopReason::LeftSolid && q.size() >= 2 && (q.back() - q[q.size() - 2]).norm() > 0)
+                out[i].points.push_back(q.back() + 0.25 * h * (q.back() - q[q.size() - 2]).normalized());
+        }
+        stats.streamlines += int(raw.size());
+        return out;
+    };
+    const std::vector<Traced> lines = run(p0, v0, &anchor);
+    auto line = [&](int si, int ki, int di) -> const Traced& { return lines[index.at({si, ki, di})]; };
+    auto usable = [](const Traced& t) { return t.points.size() >= 2; };
+
+    SoupBuilder soup_builder(soup, h, options.overshoot);
+    std::vector<std::pair<Poly, Poly>> diverging;
+    // Cross-extension jobs: (source, seed, direction, sign of the tangent pointing away from the sheet).
+    struct Job { int si, ki, di, sign; };
+    std::vector<Job> jobs;
+    for (int si = 0; si < int(sources.size()); ++si) {
+        const std::vector<SheetSeed>& S = sources[si].seeds;
+        const bool widen = sources[si].kind != SheetSource::Singular;
+        // 2. Ribbons between consecutive seeds (skip up to 2 seeds that lost this direction).
+        for (int ki = 0; ki + 1 < int(S.size()); ++ki)
+            for (int di = 0; di < int(S[ki].directions.size()); ++di) {
+                const Eigen::Vector3d& a = S[ki].directions[di];
+                for (int kj = ki + 1; kj < std::min(ki + 4, int(S.size())); ++kj) {
+                    int best = -1;
+                    for (int dj = 0; dj < int(S[kj].directions.size()); ++dj)
+                        if (best < 0 || a.dot(S[kj].directions[dj]) > a.dot(S[kj].directions[best])) best = dj;
+                    if (best < 0 || a.dot(S[kj].directions[best]) < cos_match) continue;
+                    const Traced &A = line(si, ki, di), &B = line(si, kj, best);
+                    if (usable(A) && usable(B)) {
+                        const double gap = soup_builder.ribbon(A, B, si, widen);
+                        ++stats.ribbons;
+                        if (gap > 3 * h) diverging.push_back({A.points, B.points});
+                    }
+                    break;
+                }
+            }
+        if (S.size() < 2) continue;
+        // Direction jumps between consecutive seeds start cross extensions too.
+        for (int ki = 0; ki + 1 < int(S.size()); ++ki) {
+            auto matched = [&](const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D) {
+                for (const auto& b : D) if (a.dot(b) >= cos_match) return true;
+                return false;
+            };
+            for (int di = 0; di < int(S[ki].directions.size()); ++di)
+                if (!matched(S[ki].directions[di], S[ki + 1].directions)) jobs.push_back({si, ki, di, +1});
+            for (int dj = 0; dj < int(S[ki + 1].directions.size()); ++dj)
+                if (!matched(S[ki + 1].directions[dj], S[ki].directions)) jobs.push_back({si, ki + 1, dj, -1});
+        }
+        for (int di = 0; di < int(S.front().directions.size()); ++di) jobs.push_back({si, 0, di, -1});
+        for (int di = 0; di < int(S.back().directions.size()); ++di) jobs.push_back({si, int(S.size()) - 1, di, +1});
+
+        // 3. Past a source end on the boundary: the nearest complete seed's streamlines, translated
+        // to the end point and 0.5 h beyond it.
+        std::map<int, int> counts;
+        for (const auto& s : S) counts[int(s.directions.size())] += 1;
+        int full = 0, most = 0;
+        for (auto [k, c] : counts) if (c > most) most = c, full = k;
+        for (int e = 0; e < 2; ++e) {
+            if (!sources[si].boundary_end[e] || full == 0) continue;
+            int k0 = -1;
+            for (int j = 0; j < int(S.size()) && k0 < 0; ++j) {
+                const int k = e == 0 ? j : int(S.size()) - 1 - j;
+                bool ok = int(S[k].directions.size()) == full;
+                for (int d = 0; d < full && ok; ++d) ok = usable(line(si, k, d));
+                if (ok) k0 = k;
+            }
+            if (k0 < 0) continue;
+            const Eigen::Vector3d pend = e == 0 ? S.front().point : S.back().point;
+            const Eigen::Vector3d pin = e == 0 ? S[1].point : S[S.size() - 2].point;
+            const Eigen::Vector3d ext = pend + 0.5 * h * (pend - pin).normalized();
+            for (int d = 0; d < full; ++d) {
+                Traced A = line(si, k0, d);
+                for (const Eigen::Vector3d& target : {pend, ext}) {
+                    Traced B = A;
+                    const Eigen::Vector3d shift = target - S[k0].point;
+                    for (auto& p : B.points) p += shift;
+                    soup_builder.ribbon(A, B, si, widen);
+                    A = B;
+                }
+            }
+        }
+    }
+
+    // 4. Cross extensions: from each job's streamline, trace along the source tangent (away from
+    // the sheet) and zip neighbouring cross streamlines; then close up to both ends of the
+    // generating streamline. Diverging neighbours are bridged the same way along the in-sheet normal.
+    std::vector<Eigen::Vector3d> cp, cv;
+    std::vector<int> cjob;
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> janchor;
+    std::vector<int> jsource;
+    auto add_job_points = [&](const Poly& A, auto&& direction_at) {
+        const int ji = int(janchor.size());
+        janchor.push_back({A.front(), A.back()});
+        const double la = poly_length(A);
+        const Poly Ar = resample(A, linspace(0, la, std::max(2, int(std::ceil(la / (0.5 * h)))) + 1));
+        for (size_t k = 1; k < Ar.size(); ++k) {
+            Eigen::Vector3d dir;
+            if (!direction_at(Ar, k, dir)) continue;
+            cp.push_back(Ar[k] + 0.05 * h * dir), cv.push_back(dir), cjob.push_back(ji);
+        }
+    };
+    for (const Job& j : jobs) {
+        const std::vector<SheetSeed>& S = sources[j.si].seeds;
+        const Traced& A = line(j.si, j.ki, j.di);
+        if (!usable(A) || poly_length(A.points) < 1e-9) continue;
+        const Eigen::Vector3d a = S[std::max(j.ki - 1, 0)].point, b = S[std::min(j.ki + 1, int(S.size()) - 1)].point;
+        const Eigen::Vector3d tv = j.sign * (b - a).normalized();
+        if (!tv.allFinite()) continue;
+        jsource.push_back(j.si);
+        add_job_points(A.points, [&](const Poly&, size_t, Eigen::Vector3d& d) { d = tv; return true; });
+    }
+    for (const auto& [P, Q] : diverging)
+        for (const auto& [X, Y] : {std::pair<const Poly&, const Poly&>(P, Q), std::pair<const Poly&, const Poly&>(Q, P)}) {
+            const double lx = poly_length(X), ly = poly_length(Y);
+            if (lx < 1e-9 || ly < 1e-9) continue;
+            const int ns = std::max(2, int(std::ceil(lx / (0.5 * h)))) + 1;
+            const Poly Yr = resample(Y, linspace(0, ly, ns));
+            jsource.push_back(-1);  // singular-like: never widened
+            add_job_points(X, [&](const Poly& Xr, size_t k, Eigen::Vector3d& d) {
+                const Eigen::Vector3d tg = (Xr[std::min(k + 1, Xr.size() - 1)] - Xr[k - 1]).normalized();
+                const Eigen::Vector3d g = Yr[std::min(k, Yr.size() - 1)] - Xr[k];
+                d = g - g.dot(tg) * tg;
+                if (d.norm() < 0.5 * h) return false;
+                d.normalize();
+                return true;
+            });
+        }
+    if (!cp.empty()) {
+        const std::vector<Traced> cross = run(cp, cv, nullptr);
+        for (int ji = 0; ji < int(janchor.size()); ++ji) {
+            std::vector<int> idx;
+            for (int i = 0; i < int(cjob.size()); ++i) if (cjob[i] == ji) idx.push_back(i);
+            const int si = jsource[ji];
+            const bool widen = si >= 0 && sources[si].kind != SheetSource::Singular;
+            const int source = si >= 0 ? si : 0;
+            std::vector<int> valid;
+            for (int i : idx) if (usable(cross[i])) valid.push_back(i);
+            for (size_t k = 0; k + 1 < valid.size(); ++k) {
+                soup_builder.ribbon(cross[valid[k]], cross[valid[k + 1]], source, widen);
+                ++stats.cross_ribbons;
+            }
+            if (valid.empty()) continue;
+            for (auto [i, target] : {std::pair<int, Eigen::Vector3d>(valid.front(), janchor[ji].first),
+                                     std::pair<int, Eigen::Vector3d>(valid.back(), janchor[ji].second)}) {
+                Traced B = cross[i];
+                const Eigen::Vector3d shift = target - B.points.front();
+                for (auto& p : B.points) p += shift;
+                soup_builder.ribbon(cross[i], B, source, widen);
+                ++stats.cross_ribbons;
+            }
+        }
+    }
+    soup_builder.finish();
+    stats.sources = int(sources.size());
+    return soup;
+}
+
+}  // namespace framefix

@@ -1,0 +1,336 @@
+#include "framefix/blocks/validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <unordered_map>
+
+namespace framefix {
+
+namespace {
+
+struct Adjacency {                 // triangle pairs sharing a mesh edge (non-manifold edges: all pairs)
+    struct Pair { int a, b; double length; int v0, v1; };
+    std::vector<Pair> pairs;
+    bool manifold = true;
+    int edges = 0, verts = 0;
+};
+
+Adjacency adjacency(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S) {
+    Adjacency adj;
+    const long long nv = mesh.num_vertices();
+    std::unordered_map<long long, std::vector<int>> by_edge;
+    std::set<int> verts;
+    for (int i = 0; i < int(S.size()); ++i)
+        for (int k = 0; k < 3; ++k) {
+            const int a = S[i].verts[k], c = S[i].verts[(k + 1) % 3];
+            by_edge[std::min(a, c) * nv + std::max(a, c)].push_back(i);
+            verts.insert(a);
+        }
+    for (auto& [key, tris] : by_edge) {
+        adj.manifold &= tris.size() == 2;
+        const int v0 = int(key / nv), v1 = int(key % nv);
+        const double len = (mesh.points.row(v0) - mesh.points.row(v1)).norm();
+        for (size_t x = 0; x < tris.size(); ++x)
+            for (size_t y = x + 1; y < tris.size(); ++y) adj.pairs.push_back({tris[x], tris[y], len, v0, v1});
+    }
+    adj.edges = int(by_edge.size()), adj.verts = int(verts.size());
+    return adj;
+}
+
+int renumber(std::vector<int>& patch) {
+    std::unordered_map<int, int> id;
+    for (int& p : patch) p = id.try_emplace(p, int(id.size())).first->second;
+    return int(id.size());
+}
+
+std::vector<int> components(int n, const Adjacency& adj, const std::vector<int>& label) {
+    std::vector<int> parent(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
+    for (const auto& p : adj.pairs)
+        if (label[p.a] == label[p.b]) parent[find(p.a)] = find(p.b);
+    std::vector<int> out(n);
+    for (int i = 0; i < n; ++i) out[i] = find(i);
+    renumber(out);
+    return out;
+}
+
+double angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    if (a.norm() == 0 || b.norm() == 0) return 180;
+    return std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0)) * 180 / M_PI;
+}
+
+struct PatchStats { std::vector<double> area, perimeter; std::vector<std::map<int, double>> contact; };
+
+PatchStats patch_stats(const std::vector<BoundaryTriangle>& S, const Adjacency& adj, const std::vector<int>& patch, int n) {
+    PatchStats s{std::vector<double>(n, 0), std::vector<double>(n, 0), std::vector<std::map<int, double>>(n)};
+    for (size_t i = 0; i < S.size(); ++i) s.area[patch[i]] += 0.5 * S[i].normal.norm();
+    for (const auto& p : adj.pairs) {
+        const int a = patch[p.a], b = patch[p.b];
+        if (a == b) continue;
+        s.perimeter[a] += p.length, s.perimeter[b] += p.length;
+        s.contact[a][b] += p.length, s.contact[b][a] += p.length;
+    }
+    return s;
+}
+
+int longest_contact(const std::map<int, double>& contact) {
+    int best = -1;
+    double most = -1;
+    for (auto [q, l] : contact) if (l > most) most = l, best = q;
+    return best;
+}
+
+// Section 0: tiny patches, thin staircase strips, and bevel strips between two ~90 deg flanks.
+void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, const Adjacency& adj, double h,
+                   const BlockOptions& o, std::vector<int>& patch) {
+    for (int it = 0; it < 30; ++it) {  // tiny patches, smallest first
+        const int n = renumber(patch);
+        const PatchStats s = patch_stats(S, adj, patch, n);
+        int small = -1;
+        for (int p = 0; p < n; ++p)
+            if (s.area[p] < o.patch_merge_area * h * h && !s.contact[p].empty() && (small < 0 || s.area[p] < s.area[small])) small = p;
+        if (small < 0) break;
+        const int target = longest_contact(s.contact[small]);
+        for (int& p : patch) if (p == small) p = target;
+    }
+    for (int it = 0; it < 30 && o.thin_width > 0; ++it) {  // strips one tet wide
+        const int n = renumber(patch);
+        const PatchStats s = patch_stats(S, adj, patch, n);
+        int thin = -1;
+        double wmin = o.thin_width * h;
+        for (int p = 0; p < n; ++p) {
+            if (s.perimeter[p] <= 0) continue;
+            const double w = 2 * s.area[p] / s.perimeter[p];
+            if (w < wmin) wmin = w, thin = p;
+        }
+        if (thin < 0) break;
+        const int target = longest_contact(s.contact[thin]);
+        for (int& p : patch) if (p == thin) p = target;
+    }
+    for (int it = 0; it < 30 && o.bevel_width > 0; ++it) {
+        const int n = renumber(patch);
+        const PatchStats s = patch_stats(S, adj, patch, n);
+        std::vector<Eigen::Vector3d> normal(n, Eigen::Vector3d::Zero());
+        for (size_t i = 0; i < S.size(); ++i) normal[patch[i]] += S[i].normal;
+        std::vector<int> order(n);
+        std::iota(order.begin(), order.end(), 0);
+        auto width = [&](int p) { return s.perimeter[p] > 0 ? 2 * s.area[p] / s.perimeter[p] : 1e300; };
+        std::sort(order.begin(), order.end(), [&](int a, int b) { return width(a) < width(b); });
+        bool split = false;
+        for (int p : order) {
+            if (width(p) >= o.bevel_width * h) break;
+            std::vector<std::pair<double, int>> flank;
+            for (auto [q, l] : s.contact[p]) flank.push_back({l, q});
+            std::sort(flank.rbegin(), flank.rend());
+            if (flank.size() < 2 || flank[1].first < 0.25 * s.perimeter[p]) continue;
+            const int Q = flank[0].second, R = flank[1].second;
+            const double qr = angle_deg(normal[Q], normal[R]);
+            if (qr < 45 || qr > 135) continue;
+            if (angle_deg(normal[p], normal[Q]) > 65 || angle_deg(normal[p], normal[R]) > 65) continue;
+            auto centroid = [&](int i) {
+                return Eigen::Vector3d((mesh.points.row(S[i].verts[0]) + mesh.points.row(S[i].verts[1]) +
+                                        mesh.points.row(S[i].verts[2])).transpose() / 3);
+            };
+            std::vector<int> in_p, in_q, in_r;
+            for (int i = 0; i < int(S.size()); ++i) {
+                if (patch[i] == p) in_p.push_back(i);
+                else if (patch[i] == Q) in_q.push_back(i);
+                else if (patch[i] == R) in_r.push_back(i);
+            }
+            auto nearest = [&](const Eigen::Vector3d& c, const std::vector<int>& set) {
+                double d = 1e300;
+                for (int j : set) d = std::min(d, (centroid(j) - c).squaredNorm());
+                return d;
+            };
+            std::vector<int> next = patch;
+            for (int i : in_p) {
+                const Eigen::Vector3d c = centroid(i);
+                next[i] = nearest(c, in_q) <= nearest(c, in_r) ? Q : R;
+            }
+            patch = next;
+            split = true;
+            break;
+        }
+        if (!split) break;
+    }
+    renumber(patch);
+}
+
+}  // namespace
+
+BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, double h,
+                          const BlockOptions& o, BlockInfo& info) {
+    BlockFaces out;
+    const int nf = int(S.size());
+    const Adjacency adj = adjacency(mesh, S);
+    info.manifold = adj.manifold;
+    info.euler = adj.verts - adj.edges + nf;
+    std::vector<int> label(nf);
+    for (int i = 0; i < nf; ++i) label[i] = S[i].label;
+    std::vector<int> patch = components(nf, adj, label);
+    clean_patches(mesh, S, adj, h, o, patch);
+    const int np = nf ? *std::max_element(patch.begin(), patch.end()) + 1 : 0;
+    info.faces = np;
+
+    // Disk test per patch: chi = V - E + F must be 1.
+    bool disks = true;
+    {
+        std::vector<std::set<int>> pv(np);
+        std::vector<std::set<std::pair<int, int>>> pe(np);
+        std::vector<int> pf(np, 0);
+        for (int i = 0; i < nf; ++i) {
+            pf[patch[i]] += 1;
+            for (int k = 0; k < 3; ++k) {
+                const int a = S[i].verts[k], c = S[i].verts[(k + 1) % 3];
+                pv[patch[i]].insert(a), pe[patch[i]].insert({std::min(a, c), std::max(a, c)});
+            }
+        }
+        for (int p = 0; p < np; ++p) disks &= int(pv[p].size()) - int(pe[p].size()) + pf[p] == 1;
+    }
+
+    // Corners: vertices in >= 3 patches, clustered along mesh edges between such vertices.
+    std::map<int, std::set<int>> vp;
+    for (int i = 0; i < nf; ++i) for (int k = 0; k < 3; ++k) vp[S[i].verts[k]].insert(patch[i]);
+    std::map<int, int> corner_of;  // corner vertex -> cluster
+    std::vector<std::vector<int>> clusters;
+    {
+        std::map<int, std::vector<int>> cadj;
+        for (const auto& p : adj.pairs)
+            if (vp[p.v0].size() >= 3 && vp[p.v1].size() >= 3) cadj[p.v0].push_back(p.v1), cadj[p.v1].push_back(p.v0);
+        for (const auto& [v, ps] : vp) {
+            if (ps.size() < 3 || corner_of.count(v)) continue;
+            clusters.push_back({});
+            std::vector<int> stack{v};
+            corner_of[v] = int(clusters.size()) - 1;
+            while (!stack.empty()) {
+                const int x = stack.back();
+                stack.pop_back();
+                clusters.back().push_back(x);
+                for (int y : cadj[x]) if (!corner_of.count(y)) corner_of[y] = corner_of[v], stack.push_back(y);
+            }
+        }
+    }
+    info.corners = int(clusters.size());
+    bool degree3 = true;
+    std::vector<Eigen::Vector3d> corner_pos;
+    std::vector<std::set<int>> corner_patches;
+    for (const auto& c : clusters) {
+        std::set<int> ps;
+        Eigen::Vector3d pos = Eigen::Vector3d::Zero();
+        for (int v : c) ps.insert(vp[v].begin(), vp[v].end()), pos += mesh.points.row(v).transpose();
+        degree3 &= ps.size() == 3;
+        corner_pos.push_back(pos / double(c.size()));
+        corner_patches.push_back(ps);
+    }
+
+    // Edges: per patch pair, connected chains of the mesh edges between the two patches.
+    std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> chains;
+    for (const auto& p : adj.pairs) {
+        const int a = patch[p.a], b = patch[p.b];
+        if (a != b) chains[{std::min(a, b), std::max(a, b)}].push_back({p.v0, p.v1});
+    }
+    info.edges = 0;
+    std::vector<Eigen::Vector3d> centroid(nf);
+    for (int i = 0; i < nf; ++i)
+        centroid[i] = (mesh.points.row(S[i].verts[0]) + mesh.points.row(S[i].verts[1]) + mesh.points.row(S[i].verts[2])).transpose() / 3;
+    auto mean_normal_near = [&](int p, const std::vector<Eigen::Vector3d>& at) {
+        Eigen::Vector3d n = Eigen::Vector3d::Zero();
+        for (int i = 0; i < nf; ++i) {
+            if (patch[i] != p) continue;
+            for (const auto& x : at) if ((centroid[i] - x).norm() < 2 * h) { n += S[i].normal; break; }
+        }
+        return n;
+    };
+    info.flat_edges = 0;
+    for (const auto& [key, segs] : chains) {
+        std::map<int, int> parent;
+        auto find = [&](int a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
+        for (auto [a, c] : segs) parent.try_emplace(a, a), parent.try_emplace(c, c);
+        for (auto [a, c] : segs) parent[find(a)] = find(c);
+        std::set<int> roots;
+        std::vector<Eigen::Vector3d> chain_pts;
+        for (auto& [v, _] : parent) roots.insert(find(v)), chain_pts.push_back(mesh.points.row(v).transpose());
+        info.edges += int(roots.size());
+        // Flat-edge proxy: outward mean normals of the two patches within 2 h of their chain.
+        if (angle_deg(mean_normal_near(key.first, chain_pts), mean_normal_near(key.second, chain_pts)) < o.flat_deg)
+            info.flat_edges += 1;
+    }
+    info.flat_corners = 0;
+    for (size_t c = 0; c < clusters.size(); ++c) {
+        std::vector<Eigen::Vector3d> n;
+        for (int p : corner_patches[c]) n.push_back(mean_normal_near(p, {corner_pos[c]}));
+        bool flat = false;
+        for (size_t x = 0; x < n.size(); ++x)
+            for (size_t y = x + 1; y < n.size(); ++y) flat |= angle_deg(n[x], n[y]) < o.flat_deg;
+        info.flat_corners += flat;
+    }
+
+    // Patch labels (majority) and corners, for conformity.
+    out.label.assign(np, 0);
+    out.corners.assign(np, {});
+    {
+        std::vector<std::map<int, int>> votes(np);
+        for (int i = 0; i < nf; ++i) votes[patch[i]][S[i].label] += 1;
+        for (int p = 0; p < np; ++p) {
+            int most = 0;
+            for (auto [l, c] : votes[p]) if (c > most) most = c, out.label[p] = l;
+        }
+        for (size_t c = 0; c < clusters.size(); ++c)
+            for (int p : corner_patches[c]) out.corners[p].push_back(corner_pos[c]);
+    }
+
+    const std::pair<bool, std::string> tests[] = {
+        {info.manifold, "non-manifold boundary"},
+        {info.euler == 2, "boundary euler " + std::to_string(info.euler)},
+        {info.faces == 6, "faces " + std::to_string(info.faces)},
+        {info.edges == 12, "edges " + std::to_string(info.edges)},
+        {info.corners == 8, "corners " + std::to_string(info.corners)},
+        {disks, "a face is not a disk"},
+        {degree3, "a corner is not of degree 3"},
+    };
+    info.valid = true;
+    for (const auto& [ok, why] : tests)
+        if (!ok) { info.valid = false, info.reason = why; break; }
+    return out;
+}
+
+std::vector<BlockPair> check_conformity(const std::vector<BlockFaces>& faces, double tolerance) {
+    std::vector<BlockPair> out;
+    const int n = int(faces.size());
+    for (int b = 0; b < n; ++b)
+        for (int c = b + 1; c < n; ++c) {
+            std::vector<int> pb, pc;
+            for (int p = 0; p < int(faces[b].label.size()); ++p) if (faces[b].label[p] == c) pb.push_back(p);
+            for (int p = 0; p < int(faces[c].label.size()); ++p) if (faces[c].label[p] == b) pc.push_back(p);
+            if (pb.empty() && pc.empty()) continue;
+            BlockPair pair{b, c, false, ""};
+            if (pb.size() != 1 || pc.size() != 1) {
+                pair.reason = "patches " + std::to_string(pb.size()) + "|" + std::to_string(pc.size());
+            } else {
+                const auto &Cb = faces[b].corners[pb[0]], &Cc = faces[c].corners[pc[0]];
+                if (Cb.size() != 4 || Cc.size() != 4) {
+                    pair.reason = "corners " + std::to_string(Cb.size()) + "|" + std::to_string(Cc.size());
+                } else {
+                    double worst = 0;
+                    for (const auto* pair_sets : {&Cb, &Cc}) {
+                        const auto& other = pair_sets == &Cb ? Cc : Cb;
+                        for (const auto& x : *pair_sets) {
+                            double d = 1e300;
+                            for (const auto& y : other) d = std::min(d, (x - y).norm());
+                            worst = std::max(worst, d);
+                        }
+                    }
+                    pair.conforming = worst <= tolerance;
+                    if (!pair.conforming) pair.reason = "corner mismatch " + std::to_string(worst);
+                }
+            }
+            out.push_back(pair);
+        }
+    return out;
+}
+
+}  // namespace framefix
