@@ -1,4 +1,4 @@
-// bench_field MESH.msh [threads] [cg|ldlt|cholmod] [max_iterations]
+// bench_field MESH.msh [threads] [cg|ldlt|cholmod] [max_iterations]   (env FF_REORDER=0: input numbering)
 // Reads a gmsh/Medit tet mesh, finds its crease features, solves the frame field, prints one
 // line of figures. Peer reference (Ray et al. initialisation alone, 2 cores, HexMe notch):
 // 59k tets 0.79 s, 233k tets 4.4 s, 1.07M tets 40 s.
@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
         o.solver = solver == "ldlt" ? SparseSolver::SimplicialLDLT
                    : solver == "cholmod" ? SparseSolver::Cholmod : SparseSolver::ConjugateGradient;
         if (argc > 4) o.max_iterations = std::atoi(argv[4]);
+        if (const char* r = std::getenv("FF_REORDER")) o.reorder = std::atoi(r) != 0;
         const double cpu0 = cpu_seconds();
         const FrameField f = solve_frame_field(cf.mesh, topo, cons, o);
         const double cpu_solve = cpu_seconds() - cpu0;

@@ -41,6 +41,7 @@ struct FieldOptions {
     double tau_factor = 50;      // tau_0 = tau_factor / lambda_1, lambda_1 ~ (pi / bbox diagonal)^2
     double tau_power = 3;        // tau_k = max(tau_0 / k^tau_power, h_mean^2)
     double cg_tolerance = 1e-6;  // relative residual of each MBO diffusion solve (init: x 1e-2)
+    bool reorder = true;         // solve on a reverse Cuthill-McKee vertex numbering (cache locality)
 };
 
 using FrameCoefficients = Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>;

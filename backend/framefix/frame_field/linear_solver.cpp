@@ -24,7 +24,7 @@ ConstrainedSolver::~ConstrainedSolver() = default;
 LinearSolveStats ConstrainedSolver::solve(double mw, double sw, const FrameCoefficients& b, FrameCoefficients& x,
                                           double tolerance) {
     if (kind_ == SparseSolver::ConjugateGradient)
-        return solve_projected_cg(sys_, space_, mw, sw, b, x, tolerance, threads_);
+        return solve_projected_cg(sys_, space_, mw, sw, b, x, tolerance, threads_, work_);
     return solve_direct(*direct_, mw, sw, b, x);
 }
 

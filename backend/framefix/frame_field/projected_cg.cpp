@@ -1,21 +1,29 @@
 // Jacobi-preconditioned CG on the constrained space V (constrained_space.h), on full #V x 9
 // fields. On V the Jacobi preconditioner of the reduced matrix is a scalar per vertex
 // (P_n^T P_n = I2), so it commutes with Pi and keeps the iterates in V.
+// Per iteration three passes over the vectors: SpMV (+ p.Ap), x/r update (+ r.z, r.r), new p;
+// z = D^-1 r is never stored.
 #include <cmath>
 #include <vector>
 
 #include "framefix/frame_field/linear_solver.h"
+
+// The kernels do 9 multiply-adds per loaded value and are compute-bound: an AVX2+FMA clone,
+// picked at load time, measured 6.05 -> 4.14 s CPU for the whole solve (notch 230k tets, 1 thread).
+#define FF_SIMD __attribute__((target_clones("arch=x86-64-v3", "default")))
 
 namespace framefix {
 namespace {
 
 constexpr int kBlock = 2048;  // rows per partial sum, fixed for thread-count independent results
 
+int blocks_of(int nv) { return (nv + kBlock - 1) / kBlock; }
+
 // y = Pi (mass_weight M + stiff_weight K) x, and returns x . y (summed by fixed blocks).
-double apply_projected(const P1System& sys, const ConstrainedSpace& space, double mw, double sw,
-                       const FrameCoefficients& x, FrameCoefficients& y, int threads) {
+FF_SIMD double apply_projected(const P1System& sys, const ConstrainedSpace& space, double mw, double sw,
+                               const FrameCoefficients& x, FrameCoefficients& y, int threads) {
     const int nv = sys.rows();
-    const int blocks = (nv + kBlock - 1) / kBlock;
+    const int blocks = blocks_of(nv);
     std::vector<double> partial(blocks, 0.0);
     const double* X = x.data();
     double* Y = y.data();
@@ -55,67 +63,124 @@ double apply_projected(const P1System& sys, const ConstrainedSpace& space, doubl
     return total;
 }
 
+// r = Pi b - Ay (Ay already in V); returns |Pi b|^2.
+double initial_residual(const ConstrainedSpace& space, const FrameCoefficients& b, const FrameCoefficients& Ay,
+                        FrameCoefficients& r, int threads) {
+    const int nv = space.vertices();
+    const int blocks = blocks_of(nv);
+    std::vector<double> partial(blocks, 0.0);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int blk = 0; blk < blocks; ++blk) {
+        double s = 0;
+        const int end = std::min(nv, (blk + 1) * kBlock);
+        for (int i = blk * kBlock; i < end; ++i) {
+            SH9 bi = b.row(i).transpose();
+            if (space.kind[i] == ConstraintKind::Fixed) {
+                bi.setZero();
+            } else if (space.kind[i] == ConstraintKind::NormalAligned) {
+                const auto& P = space.families[space.family[i]].P;
+                const Eigen::Vector2d y = P.transpose() * bi;
+                bi = P * y;
+            }
+            s += bi.squaredNorm();
+            r.row(i) = bi.transpose() - Ay.row(i);
+        }
+        partial[blk] = s;
+    }
+    double total = 0;
+    for (double p : partial) total += p;
+    return total;
+}
+
+// x += alpha p, r -= alpha Ap; returns r . D^-1 r in rz and r . r in rr.
+FF_SIMD void update(double alpha, const FrameCoefficients& p, const FrameCoefficients& Ap,
+                    const Eigen::VectorXd& inv_diag, FrameCoefficients& x, FrameCoefficients& r, double& rz,
+                    double& rr, int threads) {
+    const int nv = int(x.rows());
+    const int blocks = blocks_of(nv);
+    std::vector<double> part_rz(blocks), part_rr(blocks);
+    const double* P = p.data();
+    const double* AP = Ap.data();
+    double* X = x.data();
+    double* R = r.data();
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int blk = 0; blk < blocks; ++blk) {
+        double srz = 0, srr = 0;
+        const int end = std::min(nv, (blk + 1) * kBlock);
+        for (int i = blk * kBlock; i < end; ++i) {
+            double s = 0;
+            for (int c = 0; c < 9; ++c) {
+                const size_t k = 9 * size_t(i) + c;
+                if (alpha != 0) {  // alpha = 0: the dots only (p is not set yet)
+                    X[k] += alpha * P[k];
+                    R[k] -= alpha * AP[k];
+                }
+                s += R[k] * R[k];
+            }
+            srr += s;
+            srz += inv_diag(i) * s;
+        }
+        part_rz[blk] = srz;
+        part_rr[blk] = srr;
+    }
+    rz = rr = 0;
+    for (int blk = 0; blk < blocks; ++blk) {
+        rz += part_rz[blk];
+        rr += part_rr[blk];
+    }
+}
+
+// p = D^-1 r + beta p (beta = 0: p = D^-1 r, whatever p held).
+FF_SIMD void new_direction(double beta, const FrameCoefficients& r, const Eigen::VectorXd& inv_diag,
+                           FrameCoefficients& p, int threads) {
+    const int nv = int(r.rows());
+    const double* R = r.data();
+    double* P = p.data();
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int i = 0; i < nv; ++i) {
+        const double d = inv_diag(i);
+        if (beta == 0)
+            for (int c = 0; c < 9; ++c) P[9 * size_t(i) + c] = d * R[9 * size_t(i) + c];
+        else
+            for (int c = 0; c < 9; ++c) P[9 * size_t(i) + c] = d * R[9 * size_t(i) + c] + beta * P[9 * size_t(i) + c];
+    }
+}
+
 }  // namespace
 
 LinearSolveStats solve_projected_cg(const P1System& sys, const ConstrainedSpace& space, double mw, double sw,
-                                    const FrameCoefficients& b, FrameCoefficients& x, double tolerance,
-                                    int threads) {
+                                    const FrameCoefficients& b, FrameCoefficients& x, double tolerance, int threads,
+                                    ConstrainedSolver::CgWork& w) {
     const int nv = sys.rows();
     LinearSolveStats stats;
-    Eigen::VectorXd inv_diag(nv);
-    for (int i = 0; i < nv; ++i) inv_diag(i) = 1.0 / (mw * sys.mass(i) + sw * sys.K[sys.diag[i]]);
+    w.inv_diag.resize(nv);
+    for (int i = 0; i < nv; ++i) w.inv_diag(i) = 1.0 / (mw * sys.mass(i) + sw * sys.K[sys.diag[i]]);
+    w.r.resize(nv, 9);
+    w.p.resize(nv, 9);
+    w.Ap.resize(nv, 9);
 
-    FrameCoefficients r(nv, 9), z(nv, 9), p(nv, 9), Ap(nv, 9);
     project_to_space(space, x, threads);
-    apply_projected(sys, space, mw, sw, x, Ap, threads);
-    FrameCoefficients bV = b;
-    project_to_space(space, bV, threads);
-    const double b_norm = std::sqrt(dot(bV, bV, threads));
-    r = bV - Ap;
+    apply_projected(sys, space, mw, sw, x, w.Ap, threads);
+    const double b_norm = std::sqrt(initial_residual(space, b, w.Ap, w.r, threads));
     if (b_norm == 0) {  // the solution is 0
         x.setZero();
         return stats;
     }
-    z = inv_diag.asDiagonal() * r;
-    p = z;
-    double rz = dot(r, z, threads);
-    double r_norm = std::sqrt(dot(r, r, threads));
+    double rz = 0, rr = 0;
+    update(0.0, w.p, w.Ap, w.inv_diag, x, w.r, rz, rr, threads);  // alpha = 0: only the two dots
+    new_direction(0.0, w.r, w.inv_diag, w.p, threads);
+    double r_norm = std::sqrt(rr);
     const int max_iterations = 20000;
-    const int blocks = (nv + kBlock - 1) / kBlock;
-    std::vector<double> part_rz(blocks), part_rr(blocks);
     while (r_norm > tolerance * b_norm && stats.iterations < max_iterations) {
-        const double pAp = apply_projected(sys, space, mw, sw, p, Ap, threads);
+        const double pAp = apply_projected(sys, space, mw, sw, w.p, w.Ap, threads);
         const double alpha = rz / pAp;
-        // x += alpha p, r -= alpha Ap, z = D^-1 r, with r.z and r.r, in one pass.
-#pragma omp parallel for schedule(static) num_threads(threads)
-        for (int blk = 0; blk < blocks; ++blk) {
-            double srz = 0, srr = 0;
-            const int end = std::min(nv, (blk + 1) * kBlock);
-            for (int i = blk * kBlock; i < end; ++i)
-                for (int c = 0; c < 9; ++c) {
-                    x(i, c) += alpha * p(i, c);
-                    const double ri = r(i, c) - alpha * Ap(i, c);
-                    r(i, c) = ri;
-                    const double zi = inv_diag(i) * ri;
-                    z(i, c) = zi;
-                    srz += ri * zi;
-                    srr += ri * ri;
-                }
-            part_rz[blk] = srz;
-            part_rr[blk] = srr;
-        }
-        double rz_new = 0, rr = 0;
-        for (int blk = 0; blk < blocks; ++blk) {
-            rz_new += part_rz[blk];
-            rr += part_rr[blk];
-        }
+        double rz_new;
+        update(alpha, w.p, w.Ap, w.inv_diag, x, w.r, rz_new, rr, threads);
         const double beta = rz_new / rz;
         rz = rz_new;
         r_norm = std::sqrt(rr);
-#pragma omp parallel for schedule(static) num_threads(threads)
-        for (int i = 0; i < nv; ++i)
-            for (int c = 0; c < 9; ++c) p(i, c) = z(i, c) + beta * p(i, c);
         stats.iterations += 1;
+        if (r_norm > tolerance * b_norm) new_direction(beta, w.r, w.inv_diag, w.p, threads);
     }
     stats.relative_residual = r_norm / b_norm;
     stats.converged = r_norm <= tolerance * b_norm;

@@ -10,6 +10,7 @@
 #include "framefix/frame_field/frame_field.h"
 #include "framefix/frame_field/linear_solver.h"
 #include "framefix/frame_field/projection.h"
+#include "framefix/frame_field/reorder.h"
 
 namespace framefix {
 namespace {
@@ -83,8 +84,15 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
     const auto t_start = Clock::now();
     report(o.progress, "field", 0.0);
 
-    const P1System sys = assemble_p1(mesh, topo, threads);
-    const ConstrainedSpace space = make_space(constraints);
+    // The solve runs on a cache-friendly numbering (reorder.h); results are mapped back at the end.
+    std::vector<int> order;
+    P1System sys = assemble_p1(mesh, topo, threads);
+    ConstrainedSpace space = make_space(constraints);
+    if (o.reorder) {
+        order = rcm_order(sys);
+        sys = permute(sys, order);
+        space = permute(space, order);
+    }
     ConstrainedSolver solver(sys, space, o.solver, threads);
     const int nv = mesh.num_vertices();
 
@@ -167,10 +175,17 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
         }
         q = relaxed;
     }
-    out.coefficients = std::move(q);
+    out.coefficients.resize(nv, 9);
     out.axes.resize(nv, 9);
-    for (int v = 0; v < nv; ++v)
-        for (int a = 0; a < 3; ++a) out.axes.block<1, 3>(v, 3 * a) = R[v].col(a).transpose();
+    const bool has_relaxed = out.relaxed_norm.size() == nv;
+    const Eigen::VectorXd distance = out.distance, relaxed_norm = out.relaxed_norm;
+    for (int v = 0; v < nv; ++v) {
+        const int w = o.reorder ? order[v] : v;  // input vertex of solver row v
+        out.coefficients.row(w) = q.row(v);
+        for (int a = 0; a < 3; ++a) out.axes.block<1, 3>(w, 3 * a) = R[v].col(a).transpose();
+        out.distance(w) = distance(v);
+        if (has_relaxed) out.relaxed_norm(w) = relaxed_norm(v);
+    }
     out.seconds_smooth = since(t_smooth);
     report(o.progress, "field", 1.0);
     return out;
