@@ -34,7 +34,7 @@ def scenario(h):
     yield 0.5
     curves = doc.getObject("SingularCurves")
     h.check(curves is not None and curves.isValid(), "analysis objects exist: %s"
-            % panel.summary.text())
+            % panel.form.summary.text())
     if curves is None:
         return
     for name in ("SingularNodes", "FeatureCurves"):

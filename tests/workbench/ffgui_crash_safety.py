@@ -43,8 +43,8 @@ def scenario(h):
     FreeCADGui.runCommand("FrameFix_Analyze")
     yield 0.3
     panel = AnalyzePanel.active
-    h.check(panel is not None and "select one solid" in panel.part_label.text(),
-            "no selection: the panel asks for one solid: %s" % (panel and panel.part_label.text()))
+    h.check(panel is not None and "select one solid" in panel.form.part_label.text(),
+            "no selection: the panel asks for one solid")
     FreeCADGui.Control.closeDialog()
     yield 0.2
 
@@ -52,8 +52,8 @@ def scenario(h):
     FreeCADGui.runCommand("FrameFix_Analyze")
     yield 0.3
     panel = AnalyzePanel.active
-    h.check(panel.size.value() > 0 and "tets" in panel.estimate.text(),
-            "default size and estimate shown: %s" % panel.estimate.text())
+    h.check(panel.form.size.value() > 0 and "tets" in panel.form.estimate.text(),
+            "default size and estimate shown: %s" % panel.form.estimate.text())
     for fake, expected, timeout in (("segv.sh", "crashed (killed by SIGSEGV)", 60),
                                     ("hang.sh", "did not finish within 3 s", 3),
                                     ("garbage.sh", "not valid JSON", 60),
@@ -64,7 +64,7 @@ def scenario(h):
         h.button(Apply).click()
         yield h.until(lambda: not panel.runner.is_running(), 70, fake + " to end")
         yield 0.2
-        text = panel.summary.text()
+        text = panel.form.summary.text()
         h.check(expected in text, "%s: the panel shows %r: %s" % (fake, expected, text))
         h.check(sorted(o.Name for o in doc.Objects) == names, fake + ": document unchanged")
         h.check(shape_digest(part.Shape) == digest, fake + ": part unchanged")
@@ -100,7 +100,7 @@ def scenario(h):
     curves = doc.getObject("SingularCurves")
     h.check(curves is not None and curves.isValid(), "canned: analysis objects created")
     h.check(len(doc.Objects) == len(names) + 4, "canned: exactly one analysis (Apply twice)")
-    h.check("3-5 curves" in panel.summary.text(), "canned: summary in the panel")
+    h.check("3-5 curves" in panel.form.summary.text(), "canned: summary in the panel")
     h.check(part.ViewObject.Transparency >= 50, "canned: part made semi-transparent")
     h.check(len(curves.ViewObject.LineColorArray) == len(curves.Shape.Edges),
             "canned: one colour per curve edge")

@@ -41,9 +41,9 @@ def scenario(h):
     curves.ViewObject.Proxy.doubleClicked(curves.ViewObject)
     yield 0.3
     panel = AnalyzePanel.active
-    h.check(panel is not None and panel.auto.isChecked(), "double click opens the panel")
-    panel.auto.setChecked(False)
-    panel.size.setValue(0.25)
+    h.check(panel is not None and panel.form.auto.isChecked(), "double click opens the panel")
+    panel.form.auto.setChecked(False)
+    panel.form.size.setValue(0.25)
     h.button(Apply).click()
     yield h.until(lambda: not panel.runner.is_running(), 30, "the rerun")
     h.check(curves.Size.Value == 0.25 and curves.MeshSize == 0.25, "Apply updated the size")

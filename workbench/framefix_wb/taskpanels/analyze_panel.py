@@ -4,18 +4,17 @@ Apply runs the backend in a QProcess (ProcessRunner) and only then, in one trans
 or updates the analysis objects: a failed, cancelled or hung run leaves the document as it
 was. Apply is refused while a run is going; Cancel kills it.
 """
-import collections
-import html
 import time
 
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtCore, QtGui, QtWidgets
+from PySide2 import QtCore, QtWidgets
 
-from .. import analysis, paths, shapes, sizing, style
+from .. import analysis, shapes, sizing
 from ..errors import FrameFixError
 from ..job import AnalysisJob
-from ..report import curve_breakdown, summary_text
+from ..report import summary_text
+from .analyze_form import AnalyzeForm
 from .process_runner import ProcessRunner
 
 
@@ -25,10 +24,6 @@ def _alive(obj):
         return obj is not None and obj.Document is not None
     except (ReferenceError, RuntimeError):
         return False
-
-
-def _error_html(text):
-    return '<span style="color:#c00000"><b>Error:</b> %s</span>' % html.escape(text)
 
 
 class AnalyzePanel:
@@ -43,8 +38,6 @@ class AnalyzePanel:
         self.analysis = analysis_obj
         self.runner = ProcessRunner()
         self.runner.progress.connect(self._on_progress)
-        self.runner.lines.connect(self._queue_output)
-        self.pending = collections.deque(maxlen=300)  # backend output not yet in the log
         self.runner.succeeded.connect(self._on_succeeded)
         self.runner.failed.connect(self._on_failed)
         self.job = self.digest = self.size_run = None
@@ -52,12 +45,15 @@ class AnalyzePanel:
         self.close_on_success = False
         self.closed = False  # the form is gone: slots must not touch widgets
         self.started = 0.0
-        self._build()
+        self.form = f = AnalyzeForm()
+        f.size.valueChanged.connect(self._update_estimate)
+        f.auto.toggled.connect(self._reset_size)
+        self.runner.lines.connect(f.queue_output)
         self._set_source(source)
         if analysis_obj is not None:
-            self.auto.setChecked(analysis_obj.Size.Value == 0)
+            f.auto.setChecked(analysis_obj.Size.Value == 0)
             if analysis_obj.Size.Value > 0:
-                self.size.setValue(analysis_obj.Size.Value)
+                f.size.setValue(analysis_obj.Size.Value)
             self.last = (analysis_obj.Source.Name, self.chosen_size())
         if message:
             self._show_error(message)
@@ -65,53 +61,6 @@ class AnalyzePanel:
         self.ticker.timeout.connect(self._tick)
         self.ticker.start(250)
         self.form.destroyed.connect(lambda *_: self._on_form_destroyed())
-
-    # -- widgets ---------------------------------------------------------------------------
-    def _build(self):
-        self.form = w = QtWidgets.QWidget()
-        w.setWindowTitle("FrameFix Analyze")
-        w.setWindowIcon(QtGui.QIcon(paths.icon("FrameFix_Analyze")))
-        layout = QtWidgets.QVBoxLayout(w)
-        self.part_label = QtWidgets.QLabel()
-        self.part_label.setWordWrap(True)
-        layout.addWidget(self.part_label)
-        grid = QtWidgets.QGridLayout()
-        grid.addWidget(QtWidgets.QLabel("Target size"), 0, 0)
-        self.size = QtWidgets.QDoubleSpinBox()
-        self.size.setDecimals(4)
-        self.size.setRange(1e-4, 1e5)
-        self.size.setMinimumWidth(80)
-        self.size.setToolTip("Target tet edge length, in model units")
-        self.size.valueChanged.connect(self._update_estimate)
-        grid.addWidget(self.size, 0, 1)
-        self.auto = QtWidgets.QCheckBox("Automatic")
-        self.auto.setToolTip("Let the backend choose the size: about %d tets" % sizing.TARGET_TETS)
-        self.auto.setChecked(True)
-        self.auto.toggled.connect(self._reset_size)
-        grid.addWidget(self.auto, 0, 2)
-        self.estimate = QtWidgets.QLabel()
-        grid.addWidget(self.estimate, 1, 1, 1, 2)
-        layout.addLayout(grid)
-        self.bar = QtWidgets.QProgressBar()
-        self.bar.setRange(0, 1000)
-        self.bar.setValue(0)
-        layout.addWidget(self.bar)
-        row = QtWidgets.QHBoxLayout()
-        self.stage = QtWidgets.QLabel("Idle")
-        self.elapsed = QtWidgets.QLabel("")
-        row.addWidget(self.stage)
-        row.addStretch()
-        row.addWidget(self.elapsed)
-        layout.addLayout(row)
-        self.summary = QtWidgets.QLabel()
-        self.summary.setWordWrap(True)
-        self.summary.setTextFormat(QtCore.Qt.RichText)
-        layout.addWidget(self.summary)
-        self.log = QtWidgets.QPlainTextEdit()
-        self.log.setReadOnly(True)
-        self.log.setMaximumBlockCount(2000)
-        self.log.setMinimumHeight(120)
-        layout.addWidget(self.log)
 
     def getStandardButtons(self):
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Apply
@@ -125,35 +74,29 @@ class AnalyzePanel:
     def _set_source(self, source):
         self.source = source
         if source is None:
-            self.part_label.setText("Part: <i>select one solid (%s)</i>" % shapes.ACCEPTED)
+            self.form.show_no_part(shapes.ACCEPTED)
             self.volume = 0.0
             self._update_estimate()
             return
         solid = shapes.solid_of(source)
         self.volume, diagonal = shapes.volume_and_diagonal(solid)
-        self.part_label.setText("Part: <b>%s</b> &mdash; volume %.4g, bounding box diagonal %.4g"
-                                % (shapes.label_of(source), self.volume, diagonal))
+        self.form.show_part(shapes.label_of(source), self.volume, diagonal)
         self._reset_size()
 
     def _reset_size(self, *_):
         """Automatic: show the size the backend will about choose, and lock it."""
-        self.size.setEnabled(not self.auto.isChecked())
-        if self.volume > 0 and self.auto.isChecked():
-            self.size.setValue(sizing.default_size(self.volume))
+        f = self.form
+        f.size.setEnabled(not f.auto.isChecked())
+        if self.volume > 0 and f.auto.isChecked():
+            f.size.setValue(sizing.default_size(self.volume))
         self._update_estimate()
 
     def chosen_size(self):
         """The size to run with; None: the backend's default."""
-        return None if self.auto.isChecked() else self.size.value()
+        return None if self.form.auto.isChecked() else self.form.size.value()
 
     def _update_estimate(self, *_):
-        if self.volume <= 0:
-            self.estimate.setText("")
-            return
-        tets = sizing.estimate_tets(self.volume, self.size.value())
-        warn = " <b>(large: may take minutes)</b>" if tets > 2e6 else ""
-        self.estimate.setText("\u2248 {:,.0f} tets (estimate){}".format(
-            float("%.2g" % tets), warn))
+        self.form.show_estimate(self.volume)
 
     def _follow_selection(self):
         if self.fixed_source or self.runner.is_running():
@@ -164,7 +107,7 @@ class AnalyzePanel:
             return
         if source is not self.source:
             self._set_source(source)
-            self.summary.setText("")
+            self.form.summary.setText("")
 
     # -- running ---------------------------------------------------------------------------
     def apply(self):
@@ -183,19 +126,17 @@ class AnalyzePanel:
             self._show_error(str(e))
             return False
         self.fixed_source = True
-        self.summary.setText("")
+        self.form.summary.setText("")
         self._log("$ " + " ".join(self.job.argv))
-        self.bar.setValue(0)
-        self.stage.setText("Starting")
+        self.form.bar.setValue(0)
+        self.form.stage.setText("Starting")
         self.started = time.monotonic()
         self.runner.start(self.job)
         return True
 
     def _on_progress(self, stage, fraction):
-        if self.closed:
-            return
-        self.bar.setValue(max(self.bar.value(), int(1000 * fraction)))  # never backwards
-        self.stage.setText("Stage: %s" % stage)
+        if not self.closed:
+            self.form.show_progress(stage, fraction)
 
     def _on_succeeded(self, report):
         self._finish_job()
@@ -209,14 +150,10 @@ class AnalyzePanel:
             self._show_error("could not add the results: %s" % e)
             return
         self.last = (self.source.Name, self.size_run)
-        self.bar.setValue(1000)
-        self.stage.setText("Done")
         text = summary_text(report["summary"], report["mesh"])
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (self.source.Label, text))
         self._log(text)
-        self._show_summary(report)
-        self.estimate.setText("{:,} tets, size {:.4g} (this run)".format(
-            int(report["mesh"].get("tets", 0)), float(report["mesh"].get("size", 0))))
+        self.form.show_report(report)
         FreeCADGui.Selection.clearSelection()  # the part's highlight would hide the curves
         if self.close_on_success:
             self._close()
@@ -227,52 +164,30 @@ class AnalyzePanel:
         self._finish_job()
         if self.closed:
             return
-        self.stage.setText("Failed")
+        self.form.stage.setText("Failed")
         self.close_on_success = False
         self._show_error(message)
 
     def _finish_job(self):
         if self.job is not None:
             if not self.closed:
-                self.elapsed.setText("Elapsed %.1f s" % (time.monotonic() - self.started))
+                self.form.elapsed.setText("Elapsed %.1f s" % (time.monotonic() - self.started))
             self.job.cleanup()
             self.job = None
 
     def _show_error(self, message):
         FreeCAD.Console.PrintError("FrameFix: %s\n" % message)
-        self._log("Error: " + message)
-        self.summary.setText(_error_html(message))
-
-    def _show_summary(self, report):
-        s = report["summary"]
-        verdict = ('<b style="color:#008000">hex-meshable</b>' if s["meshable"] else
-                   '<b style="color:#c00000">not hex-meshable</b>')
-        kinds = {style.CURVE_KIND_CODES.get(c["kind"], style.OTHER_KIND)
-                 for c in report["curves"]} | {3, 5, 35}
-        self.summary.setText(
-            "%s: <b>%d 3-5 curves</b>, %d singular curves in all (%s), %d nodes (%d invalid)"
-            "<br>%s<br>%s" % (
-                verdict, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],
-                s["invalid_nodes"], style.legend_html(style.CURVE_COLORS, kinds),
-                style.legend_html(style.NODE_COLORS)))
-
-    def _queue_output(self, text):
-        """Backend output goes to the log from the ticker: a flood costs one layout a tick."""
-        self.pending.extend(text.split("\n"))
-
-    def _flush_output(self):
-        if self.pending and not self.closed:
-            self.log.appendPlainText("\n".join(self.pending))
-            self.pending.clear()
+        if not self.closed:
+            self.form.show_error(message)
 
     def _log(self, text):
-        self._flush_output()
-        self.log.appendPlainText(text)
+        if not self.closed:
+            self.form.log_line(text)
 
     def _tick(self):
-        self._flush_output()
+        self.form.flush_output()
         if self.runner.is_running():
-            self.elapsed.setText("Elapsed %.1f s" % (time.monotonic() - self.started))
+            self.form.elapsed.setText("Elapsed %.1f s" % (time.monotonic() - self.started))
         else:
             self._follow_selection()
 
