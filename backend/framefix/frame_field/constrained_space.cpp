@@ -107,9 +107,17 @@ double dot(const FrameCoefficients& a, const FrameCoefficients& b, int threads) 
 }
 
 double dirichlet_energy(const P1System& sys, const FrameCoefficients& q, int threads) {
-    FrameCoefficients Kq;
-    apply_system(sys, 0.0, 1.0, q, Kq, threads);
-    return dot(q, Kq, threads);
+    const double* Q = q.data();
+    return blocked_sum(sys.rows(), threads, [&](int i) {  // q_i . (K q)_i, no #V x 9 temporary
+        double acc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+        for (int k = sys.row_start[i]; k < sys.row_start[i + 1]; ++k) {
+            const double* qj = Q + 9 * size_t(sys.col[k]);
+            for (int c = 0; c < 9; ++c) acc[c] += sys.K[k] * qj[c];
+        }
+        double s = 0;
+        for (int c = 0; c < 9; ++c) s += Q[9 * size_t(i) + c] * acc[c];
+        return s;
+    });
 }
 
 double mass_norm_diff(const P1System& sys, const FrameCoefficients& a, const FrameCoefficients& b, int threads) {
