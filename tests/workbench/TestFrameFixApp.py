@@ -78,6 +78,19 @@ class Objects(unittest.TestCase):
         self.assertGreater(len(features.EdgeValences), 0)
 
 
+class Correction(unittest.TestCase):
+    def test_boundary_snapping_removes_the_notchs_3_5_curve(self):
+        doc = FreeCAD.newDocument("FrameFixCorrection")
+        try:
+            part = doc.addObject("Part::Feature", "Notch")
+            part.Shape = Part.read(NOTCH)
+            doc.recompute()
+            curves = analysis.make_analysis(part, method="snap")
+            self.assertEqual((curves.Before35, curves.Curves35), (1, 0))
+        finally:
+            FreeCAD.closeDocument(doc.Name)
+
+
 class MovedPart(unittest.TestCase):
     def test_moving_the_part_reruns_and_keeps_one_3_5_curve(self):
         doc = FreeCAD.newDocument("FrameFixMoved")

@@ -251,6 +251,24 @@ class Objects(unittest.TestCase):
         self.assertTrue(curves.isValid())
         self.assertEqual(self.run_count(), 1)
 
+    def test_correction_shows_the_curves_after_and_counts_before(self):
+        curves = analysis.make_analysis(self.box, 0.5, method="snap")
+        self.assertEqual((curves.Curves35, curves.Before35), (0, 1))
+        self.assertEqual(curves.getParentGroup().Label, "FrameFix correction (snap) of Bracket")
+
+    def test_changing_the_method_reruns_with_it(self):
+        curves = analysis.make_analysis(self.box, 0.5, method="snap")
+        curves.Method = "fillet"
+        self.doc.recompute()
+        self.assertEqual(report_of(curves)["correction"]["method"], "fillet")
+
+    def test_unknown_method_is_an_error_on_the_object_only(self):
+        curves = analysis.make_analysis(self.box, 0.5, method="snap")
+        curves.Method = "magic"
+        self.doc.recompute()
+        self.assertFalse(curves.isValid())
+        self.assertEqual(self.run_count(), 1)
+
     def test_failed_run_leaves_the_document_unchanged(self):
         names = sorted(o.Name for o in self.doc.Objects)
         digest = shapes.shape_digest(self.box.Shape)

@@ -1,5 +1,6 @@
 """GUI with the real backend: select the notch, FrameFix_Analyze, Apply, wait; the analysis
-objects exist with one 3-5 curve; screenshot of the whole window (output/gui_analyze/)."""
+objects exist with one 3-5 curve; then FrameFix_Correct (snap) removes it. Screenshots of the
+whole window in output/gui_analyze/."""
 import os
 
 import FreeCAD
@@ -49,6 +50,27 @@ def scenario(h):
     h.expand_tree()
     yield 0.5
     h.screenshot("analyze_notch_closed")
+
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Correct")
+    yield 0.5
+    panel = AnalyzePanel.active
+    h.button(QtWidgets.QDialogButtonBox.Apply).click()
+    yield 1.0
+    yield h.until(lambda: not panel.runner.is_running(), 600, "the correction to finish")
+    yield 0.5
+    corrected = panel.analysis
+    h.check(corrected is not None and corrected.isValid() and corrected is not curves,
+            "correction objects exist: %s" % panel.form.summary.text())
+    if corrected is None:
+        return
+    h.check(corrected.Before35 == 1 and corrected.Curves35 == 0,
+            "snapping removes the notch's 3-5 curve: %d before, %d after"
+            % (corrected.Before35, corrected.Curves35))
+    curves.getParentGroup().ViewObject.Visibility = False
+    h.expand_tree()
+    yield 0.5
+    h.screenshot("correct_notch")
 
 
 ffgui_harness.run(scenario, watchdog_s=800)

@@ -16,11 +16,14 @@ from .job import AnalysisJob
 from .runner import run_sync
 
 GROUP_LABEL = "FrameFix analysis of %s"
+CORRECTION_GROUP_LABEL = "FrameFix correction (%s) of %s"
 
 
-def input_digest(solid, size):
-    """What a run depends on: the solid's geometry and the size (None: the backend's default)."""
-    return "%s size=%r" % (shapes.shape_digest(solid), float(size or 0.0))
+def input_digest(solid, size, method=""):
+    """What a run depends on: the solid's geometry, the size (None: the backend's default)
+    and the correction method ("" for an analysis)."""
+    digest = "%s size=%r" % (shapes.shape_digest(solid), float(size or 0.0))
+    return digest + (" method=%s" % method if method else "")
 
 
 def _gui_idle():
@@ -30,10 +33,10 @@ def _gui_idle():
         QtWidgets.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
 
 
-def run_analysis(solid, size, backend=None, timeout=None):
+def run_analysis(solid, size, backend=None, timeout=None, method=None):
     """The checked report of the backend on `solid`; size None lets the backend choose
-    (about sizing.TARGET_TETS tets). Raises BackendError."""
-    job = AnalysisJob(solid, size, backend, timeout)
+    (about sizing.TARGET_TETS tets); with `method`, of a correction. Raises BackendError."""
+    job = AnalysisJob(solid, size, backend, timeout, method)
     try:
         return run_sync(job, on_idle=_gui_idle)
     finally:
@@ -82,12 +85,13 @@ class _Transaction:
             self.doc.abortTransaction()
 
 
-def make_analysis(source, size=None, report=None, digest=None, backend=None):
+def make_analysis(source, size=None, report=None, digest=None, backend=None, method=""):
     """Add the analysis group of `source` (a part, Body or Link); returns SingularCurves.
 
     `size` None (stored as Size 0) lets the backend pick it. Without `report` the backend
-    runs first (synchronously). With it, `digest` must be input_digest() of the solid and
-    size that report was computed from.
+    runs first (synchronously). With it, `digest` must be input_digest() of the solid, size
+    and method that report was computed from. With `method` ("snap", ...), a correction:
+    the curves are those after correcting, Before35 counts the 3-5 curves before.
     """
     from .objects.feature_curves import FeatureCurves
     from .objects.singular_curves import SingularCurves
@@ -95,14 +99,18 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None):
     solid = shapes.solid_of(source)
     size = float(size or 0.0)
     if report is None:
-        report, digest = run_analysis(solid, size or None, backend), input_digest(solid, size)
+        report = run_analysis(solid, size or None, backend, method=method or None)
+        digest = input_digest(solid, size, method)
     doc = source.Document
-    with _Transaction(doc, "FrameFix analysis"):
-        group = doc.addObject("App::DocumentObjectGroup", "FrameFixAnalysis")
-        group.Label = GROUP_LABEL % shapes.label_of(source)
-        curves = _add(doc, "Part::FeaturePython", "SingularCurves", "Singular curves",
+    label = shapes.label_of(source)
+    with _Transaction(doc, "FrameFix correction" if method else "FrameFix analysis"):
+        group = doc.addObject("App::DocumentObjectGroup",
+                              "FrameFixCorrection" if method else "FrameFixAnalysis")
+        group.Label = CORRECTION_GROUP_LABEL % (method, label) if method else GROUP_LABEL % label
+        curves = _add(doc, "Part::FeaturePython", "SingularCurves",
+                      "Corrected singular curves" if method else "Singular curves",
                       SingularCurves, "singular_curves", "ViewProviderSingularCurves")
-        curves.Source, curves.Size = source, size
+        curves.Source, curves.Size, curves.Method = source, size, method
         curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
         nodes = _add(doc, "Part::FeaturePython", "SingularNodes", "Singular nodes",
                      SingularNodes, "singular_nodes", "ViewProviderSingularNodes")
@@ -115,11 +123,11 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None):
     return curves
 
 
-def update_analysis(curves, size, report, digest):
+def update_analysis(curves, size, report, digest, method=""):
     """Store a new run (from the task panel) on an existing analysis and recompute it."""
     doc = curves.Document
-    with _Transaction(doc, "FrameFix analysis"):
-        curves.Size = float(size or 0.0)
+    with _Transaction(doc, "FrameFix correction" if method else "FrameFix analysis"):
+        curves.Size, curves.Method = float(size or 0.0), method
         curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
         _fade_source(curves, curves.Source)
         _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])

@@ -29,7 +29,7 @@ def polylines(items, code_of):
         n = len(wire.Edges)
         codes += [code_of(item)] * n
         owners += [i] * n
-    compound = Part.Compound(wires)
+    compound = compound_of(wires)
     if len(compound.Edges) != len(codes):  # shared edges would break per-edge colours
         raise RuntimeError("polyline compound has %d edges, expected %d"
                            % (len(compound.Edges), len(codes)))
@@ -38,4 +38,10 @@ def polylines(items, code_of):
 
 def points(positions):
     """Compound of vertices, in order (Vertex1 is positions[0])."""
-    return Part.Compound([Part.Vertex(FreeCAD.Vector(*p)) for p in positions])
+    return compound_of([Part.Vertex(FreeCAD.Vector(*p)) for p in positions])
+
+
+def compound_of(shapes):
+    """A compound, or the null shape when there is nothing: FreeCAD's viewer reports an empty
+    compound as an error ("Bnd_Box is void"), a null shape it just does not draw."""
+    return Part.Compound(shapes) if shapes else Part.Shape()

@@ -54,10 +54,14 @@ def timeout_from_env(default=DEFAULT_TIMEOUT_S):
         return default
 
 
-class AnalysisJob:
-    """`framefix analyze <tmp>/shape.brep [--size H] --out <tmp>/out` for one shape."""
+METHODS = ("snap", "fillet", "extrude-curves", "extrude-nodes")  # `framefix correct --method`
 
-    def __init__(self, shape, size=None, backend=None, timeout=None):
+
+class AnalysisJob:
+    """`framefix analyze <tmp>/shape.brep [--size H] --out <tmp>/out` for one shape, or with
+    `method`, `framefix correct ... --method M` (analyze, correct, analyze again)."""
+
+    def __init__(self, shape, size=None, backend=None, timeout=None, method=None):
         self.backend = backend or find_backend()
         self.timeout = timeout_from_env() if timeout is None else float(timeout)
         self.workdir = tempfile.mkdtemp(prefix="framefix_")
@@ -65,9 +69,12 @@ class AnalysisJob:
         self.out_dir = os.path.join(self.workdir, "out")
         os.mkdir(self.out_dir)
         shape.exportBrep(self.brep_path)
-        self.argv = self.backend.argv + ["analyze", self.brep_path, "--out", self.out_dir]
+        command = "correct" if method else "analyze"
+        self.argv = self.backend.argv + [command, self.brep_path, "--out", self.out_dir]
         if size:
             self.argv += ["--size", repr(float(size))]
+        if method:
+            self.argv += ["--method", method]
         self.env = self.backend.environment()
         self.lines = collections.deque(maxlen=KEPT_LINES)  # the last output lines
         self.error_line = None  # (stage, message) of the backend's last `framefix: error` line

@@ -73,7 +73,19 @@ def check_report(data):
     features = [_feature_curve(f, i) for i, f in enumerate(data.get("feature_curves") or [])]
     mesh = data.get("mesh") if isinstance(data.get("mesh"), dict) else {}
     return {"summary": summary, "curves": curves, "nodes": nodes, "feature_curves": features,
-            "mesh": mesh, "timings_s": data.get("timings_s") or {}, "raw": data}
+            "mesh": mesh, "correction": _correction(data.get("correction")),
+            "timings_s": data.get("timings_s") or {}, "raw": data}
+
+
+def _correction(c):
+    """The `correction` section of `framefix correct` (None for an analysis)."""
+    if c is None:
+        return None
+    if not isinstance(c, dict) or not isinstance(c.get("before"), dict) or not isinstance(
+            c["before"].get("curves_3_5"), int):
+        _fail("correction.before.curves_3_5 is not an integer")
+    return {"method": str(c.get("method", "")), "before": dict(c["before"]),
+            "changed_curves": int(c.get("changed_curves", 0))}
 
 
 def load_report(path):

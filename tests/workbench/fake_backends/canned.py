@@ -11,9 +11,9 @@ import time
 
 
 def main(argv):
-    if len(argv) < 4 or argv[0] != "analyze" or "--out" not in argv:
-        print("framefix: error [cli]: usage: framefix analyze PART [--size H] --out DIR",
-              file=sys.stderr)
+    if len(argv) < 4 or argv[0] not in ("analyze", "correct") or "--out" not in argv:
+        print("framefix: error [cli]: usage: framefix analyze|correct PART [--size H] "
+              "[--method M] --out DIR", file=sys.stderr)
         return 2
     part, out = argv[1], argv[argv.index("--out") + 1]
     size = float(argv[argv.index("--size") + 1]) if "--size" in argv else 0.1
@@ -22,7 +22,7 @@ def main(argv):
         return 2
     if os.environ.get("FAKE_BACKEND_LOG"):
         with open(os.environ["FAKE_BACKEND_LOG"], "a") as f:
-            f.write("analyze %s size=%r\n" % (os.path.basename(part), size))
+            f.write("%s %s size=%r\n" % (argv[0], os.path.basename(part), size))
     delay = float(os.environ.get("FAKE_BACKEND_DELAY", "0.02"))
     for stage in ("load", "mesh", "field", "singularities"):
         for fraction in (0.0, 0.5, 1.0):
@@ -52,6 +52,12 @@ def main(argv):
               "singularities": {"curves": curves, "nodes": nodes, "summary": summary},
               "timings_s": {"total": 0.1}, "peak_memory_mb": 1.0}
     os.makedirs(out, exist_ok=True)
+    if argv[0] == "correct":  # the 3-5 curve is gone after the correction
+        report["correction"] = {"method": argv[argv.index("--method") + 1],
+                                "before": dict(summary), "changed_curves": 1}
+        report["singularities"]["curves"] = curves[:2]
+        report["singularities"]["summary"] = dict(summary, curves=2, curves_3_5=0,
+                                                  invalid_nodes=0, meshable=True)
     with open(os.path.join(out, "report.json"), "w") as f:
         json.dump(report, f)
     return 0

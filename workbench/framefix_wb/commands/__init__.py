@@ -5,7 +5,8 @@ def register_commands():
     """Register the FrameFix commands with FreeCAD; returns their names, in toolbar order."""
     import FreeCADGui
     from .analyze import AnalyzeCommand
-    commands = [("FrameFix_Analyze", AnalyzeCommand())]
+    from .correct import CorrectCommand
+    commands = [("FrameFix_Analyze", AnalyzeCommand()), ("FrameFix_Correct", CorrectCommand())]
     for name, command in commands:
         FreeCADGui.addCommand(name, command)
     return [name for name, _ in commands]

@@ -8,6 +8,8 @@ from ..shapes import source_from_selection
 
 
 class AnalyzeCommand:
+    METHOD = None  # a correction method: the Correct command
+
     def GetResources(self):
         return {"Pixmap": paths.icon("FrameFix_Analyze"),
                 "MenuText": "Analyze hex-meshability",
@@ -25,4 +27,4 @@ class AnalyzeCommand:
         except SelectionError as e:
             message = str(e)
             FreeCAD.Console.PrintWarning("FrameFix: %s\n" % message)
-        FreeCADGui.Control.showDialog(AnalyzePanel(source, message=message))
+        FreeCADGui.Control.showDialog(AnalyzePanel(source, message=message, method=self.METHOD))

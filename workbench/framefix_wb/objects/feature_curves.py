@@ -1,7 +1,5 @@
 """FeatureCurves: the part's feature curves coloured by the hex valence their dihedral angle
 asks for. From the report's feature_curves; an entry without points uses the solid's edge."""
-import Part
-
 from .. import geometry, shapes
 from .properties import HIDDEN, ProxyBase, add, report_of
 
@@ -31,5 +29,5 @@ class FeatureCurves(ProxyBase):
                 if f["edge"] <= len(edges):
                     pieces.append(edges[f["edge"] - 1].copy())
                     codes.append(f["valence"])
-        obj.Shape = Part.Compound(pieces)
+        obj.Shape = geometry.compound_of(pieces)
         obj.EdgeValences = codes

@@ -1,5 +1,6 @@
 """SingularCurves: the analysis object. It owns the backend run and its report; the nodes and
-feature curves objects read the report from it.
+feature curves objects read the report from it. With a Method it is a correction: the
+backend runs `correct --method M` and the curves are those after the correction.
 
 Recompute reruns the backend only when the analysed solid or the size changed (InputDigest),
 so results applied from the task panel are not computed twice.
@@ -9,6 +10,8 @@ import json
 import FreeCAD
 
 from .. import geometry, shapes, sizing, style
+from ..errors import FrameFixError
+from ..job import METHODS
 from ..report import summary_text
 from .properties import HIDDEN, READ_ONLY, ProxyBase, add, report_of
 
@@ -29,6 +32,11 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyLength", "Size", "FrameFix",
             "Target tet edge length (model units); 0: the backend's default, about %d tets"
             % sizing.TARGET_TETS)
+        add(obj, "App::PropertyString", "Method", "FrameFix",
+            "Correction method (%s); empty: an analysis" % ", ".join(METHODS))
+        add(obj, "App::PropertyInteger", "Before35", "Summary",
+            "3-5 curves before the correction", READ_ONLY)
+        self.show_method(obj)
         add(obj, "App::PropertyString", "Report", "FrameFix", "report.json of the last run", HIDDEN)
         add(obj, "App::PropertyString", "InputDigest", "FrameFix", "solid and size of that run", HIDDEN)
         add(obj, "App::PropertyIntegerList", "EdgeKinds", "FrameFix",
@@ -47,13 +55,26 @@ class SingularCurves(ProxyBase):
     def onDocumentRestored(self, obj):
         self.setup(obj)
 
+    def show_method(self, obj):
+        """Method and Before35 only on corrections: an analysis has no use for them."""
+        for name in ("Method", "Before35"):
+            obj.setEditorMode(name, (READ_ONLY if name == "Before35" else 0) if obj.Method
+                              else HIDDEN)
+
+    def onChanged(self, obj, prop):
+        if prop == "Method" and "Before35" in obj.PropertiesList:
+            self.show_method(obj)
+
     def execute(self, obj):
         from ..analysis import input_digest, run_analysis
         solid = shapes.solid_of(obj.Source)
         size = obj.Size.Value or None  # 0: the backend's default
-        digest = input_digest(solid, size)
+        if obj.Method and obj.Method not in METHODS:
+            raise FrameFixError("unknown correction method %r: use one of %s"
+                                % (obj.Method, ", ".join(METHODS)))
+        digest = input_digest(solid, size, obj.Method)
         if digest != obj.InputDigest or not obj.Report:
-            report = run_analysis(solid, size)
+            report = run_analysis(solid, size, method=obj.Method or None)
             obj.Report = json.dumps(report["raw"])
             obj.InputDigest = digest
             FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (
@@ -69,3 +90,5 @@ class SingularCurves(ProxyBase):
         obj.Meshable = report["summary"]["meshable"]
         obj.Tets = int(report["mesh"].get("tets", 0))
         obj.MeshSize = float(report["mesh"].get("size", 0.0))
+        correction = report["correction"]
+        obj.Before35 = correction["before"]["curves_3_5"] if correction else 0

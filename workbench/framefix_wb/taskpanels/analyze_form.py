@@ -6,14 +6,18 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
+from ..job import METHODS
 from ..report import curve_breakdown
 
 
 class AnalyzeForm(QtWidgets.QWidget):
-    def __init__(self):
+    """`method` given: the Correct panel, with a method choice."""
+
+    def __init__(self, method=None):
         super().__init__()
-        self.setWindowTitle("FrameFix Analyze")
-        self.setWindowIcon(QtGui.QIcon(paths.icon("FrameFix_Analyze")))
+        self.setWindowTitle("FrameFix Correct" if method else "FrameFix Analyze")
+        self.setWindowIcon(QtGui.QIcon(paths.icon(
+            "FrameFix_Correct" if method else "FrameFix_Analyze")))
         layout = QtWidgets.QVBoxLayout(self)
         self.part_label = QtWidgets.QLabel()
         self.part_label.setWordWrap(True)
@@ -32,6 +36,15 @@ class AnalyzeForm(QtWidgets.QWidget):
         grid.addWidget(self.auto, 0, 2)
         self.estimate = QtWidgets.QLabel()
         grid.addWidget(self.estimate, 1, 1, 1, 2)
+        self.method = None
+        if method:
+            grid.addWidget(QtWidgets.QLabel("Method"), 2, 0)
+            self.method = QtWidgets.QComboBox()
+            self.method.addItems(list(METHODS))
+            self.method.setCurrentText(method)
+            self.method.setToolTip("snap: move 3-5 curves onto the boundary (the paper's first "
+                                   "approach); the others change the geometry or the mesh")
+            grid.addWidget(self.method, 2, 1, 1, 2)
         layout.addLayout(grid)
         self.bar = QtWidgets.QProgressBar()
         self.bar.setRange(0, 1000)
@@ -87,10 +100,14 @@ class AnalyzeForm(QtWidgets.QWidget):
                    '<b style="color:#c00000">not hex-meshable</b>')
         kinds = {style.CURVE_KIND_CODES.get(c["kind"], style.OTHER_KIND)
                  for c in report["curves"]} | {3, 5, 35}
+        correction = report["correction"]
+        before = ("after %s (%d before): " % (correction["method"],
+                                             correction["before"]["curves_3_5"])
+                  if correction else "")
         self.summary.setText(
-            "%s: <b>%d 3-5 curves</b>, %d singular curves in all (%s), %d nodes (%d invalid)"
+            "%s: %s<b>%d 3-5 curves</b>, %d singular curves in all (%s), %d nodes (%d invalid)"
             "<br>%s<br>%s" % (
-                verdict, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],
+                verdict, before, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],
                 s["invalid_nodes"], style.legend_html(style.CURVE_COLORS, kinds),
                 style.legend_html(style.NODE_COLORS)))
         self.estimate.setText("{:,} tets, size {:.4g} (this run)".format(

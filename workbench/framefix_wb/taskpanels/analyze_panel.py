@@ -31,7 +31,7 @@ class AnalyzePanel:
 
     active = None  # the open panel, for macros and GUI tests
 
-    def __init__(self, source=None, analysis_obj=None, message=""):
+    def __init__(self, source=None, analysis_obj=None, message="", method=None):
         AnalyzePanel.active = self
         self.source = source
         self.fixed_source = source is not None
@@ -40,12 +40,14 @@ class AnalyzePanel:
         self.runner.progress.connect(self._on_progress)
         self.runner.succeeded.connect(self._on_succeeded)
         self.runner.failed.connect(self._on_failed)
-        self.job = self.digest = self.size_run = None
+        self.job = self.digest = self.size_run = self.method_run = None
         self.last = None  # (source name, size) of the run the document shows
         self.close_on_success = False
         self.closed = False  # the form is gone: slots must not touch widgets
         self.started = 0.0
-        self.form = f = AnalyzeForm()
+        if analysis_obj is not None and analysis_obj.Method:
+            method = analysis_obj.Method
+        self.form = f = AnalyzeForm(method)
         f.size.valueChanged.connect(self._update_estimate)
         f.auto.toggled.connect(self._reset_size)
         self.runner.lines.connect(f.queue_output)
@@ -54,7 +56,7 @@ class AnalyzePanel:
             f.auto.setChecked(analysis_obj.Size.Value == 0)
             if analysis_obj.Size.Value > 0:
                 f.size.setValue(analysis_obj.Size.Value)
-            self.last = (analysis_obj.Source.Name, self.chosen_size())
+            self.last = (analysis_obj.Source.Name, self.chosen_size(), self.chosen_method())
         if message:
             self._show_error(message)
         self.ticker = QtCore.QTimer(self.form)  # dies with the form, however it is closed
@@ -95,6 +97,10 @@ class AnalyzePanel:
         """The size to run with; None: the backend's default."""
         return None if self.form.auto.isChecked() else self.form.size.value()
 
+    def chosen_method(self):
+        """The correction method; "" for an analysis."""
+        return self.form.method.currentText() if self.form.method is not None else ""
+
     def _update_estimate(self, *_):
         self.form.show_estimate(self.volume)
 
@@ -119,9 +125,9 @@ class AnalyzePanel:
             if self.source is None:
                 self._set_source(shapes.source_from_selection(FreeCADGui.Selection.getSelection()))
             solid = shapes.solid_of(self.source)
-            self.size_run = self.chosen_size()
-            self.digest = analysis.input_digest(solid, self.size_run)
-            self.job = AnalysisJob(solid, self.size_run)
+            self.size_run, self.method_run = self.chosen_size(), self.chosen_method()
+            self.digest = analysis.input_digest(solid, self.size_run, self.method_run)
+            self.job = AnalysisJob(solid, self.size_run, method=self.method_run or None)
         except (FrameFixError, ReferenceError, RuntimeError, OSError) as e:
             self._show_error(str(e))
             return False
@@ -142,14 +148,15 @@ class AnalyzePanel:
         self._finish_job()
         try:
             if _alive(self.analysis):
-                analysis.update_analysis(self.analysis, self.size_run, report, self.digest)
+                analysis.update_analysis(self.analysis, self.size_run, report, self.digest,
+                                         self.method_run)
             else:
                 self.analysis = analysis.make_analysis(self.source, self.size_run, report,
-                                                       self.digest)
+                                                       self.digest, method=self.method_run)
         except Exception as e:  # the adapter boundary: whatever went wrong goes to the panel
             self._show_error("could not add the results: %s" % e)
             return
-        self.last = (self.source.Name, self.size_run)
+        self.last = (self.source.Name, self.size_run, self.method_run)
         text = summary_text(report["summary"], report["mesh"])
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (self.source.Label, text))
         self._log(text)
@@ -197,7 +204,8 @@ class AnalyzePanel:
         if self.runner.is_running():
             self.close_on_success = True
             return False
-        if self.source is not None and self.last == (self.source.Name, self.chosen_size()):
+        if self.source is not None and self.last == (self.source.Name, self.chosen_size(),
+                                                     self.chosen_method()):
             self._close()
             return True
         self.close_on_success = self.apply()
