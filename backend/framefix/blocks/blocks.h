@@ -34,6 +34,7 @@ struct BlockOptions {
     int min_component_vertices = 8;   // smaller vertex components adopt a neighbour's label
     double min_piece_fraction = 0.005;  // face-connected pieces below this fraction of the tets merge
     double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
+    double sliver_area = 6;        // patches touching <= 2 other patches merge below this area, in h^2
     double thin_width = 0.75;      // patches with 2 area / perimeter below this merge (staircase strips), in h
     double bevel_width = 2.5;      // strip-like patches below this width between two ~90 deg flanks split, in h
     double conform_tolerance = 2.5;  // corner positions of a shared face must match within this, in h

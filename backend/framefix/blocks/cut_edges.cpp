@@ -32,38 +32,67 @@ bool segment_hits(const Eigen::Vector3d& o, const Eigen::Vector3d& d, const Eige
 }  // namespace
 
 std::vector<char> cut_by_sheets(const TetMesh& mesh, const TetTopology& topo, const SheetSoup& sheets, int threads) {
-    const int ne = int(topo.edges.rows());
+    const int ne = int(topo.edges.rows()), nt = int(sheets.triangles.rows());
     std::vector<char> cut(ne, 0);
-    if (sheets.triangles.rows() == 0 || ne == 0) return cut;
-    Points mid(ne, 3);
-    double half = 0;
-    for (int e = 0; e < ne; ++e) {
-        const Eigen::RowVector3d a = mesh.points.row(topo.edges(e, 0)), b = mesh.points.row(topo.edges(e, 1));
-        mid.row(e) = 0.5 * (a + b);
-        half = std::max(half, 0.5 * (b - a).norm());
-    }
-    const PointGrid grid(mid, 2 * half);
-    const int nt = int(sheets.triangles.rows());
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
-    {
-        std::vector<int> near;
-#pragma omp for schedule(dynamic, 256)
-        for (int t = 0; t < nt; ++t) {
-            const Eigen::Vector3d p0 = sheets.points.row(sheets.triangles(t, 0)).transpose();
-            const Eigen::Vector3d p1 = sheets.points.row(sheets.triangles(t, 1)).transpose();
-            const Eigen::Vector3d p2 = sheets.points.row(sheets.triangles(t, 2)).transpose();
-            const Eigen::Vector3d c = (p0 + p1 + p2) / 3;
-            const double r = std::max({(p0 - c).norm(), (p1 - c).norm(), (p2 - c).norm()}) + half + 1e-9;
-            grid.within(c, r, near);
-            for (int e : near) {
-                const Eigen::Vector3d o = mesh.points.row(topo.edges(e, 0)).transpose();
-                const Eigen::Vector3d d = mesh.points.row(topo.edges(e, 1)).transpose() - o;
-                if (segment_hits(o, d, p0, p1, p2)) {
-#pragma omp atomic write
-                    cut[e] = 1;
-                }
-            }
+    if (nt == 0 || ne == 0) return cut;
+    // Dense grid over the mesh's bounding box, cells of about one edge length; each sheet triangle
+    // is listed in the cells its bounding box meets, each mesh edge tests the triangles of the
+    // cells its own box meets (edges are short: 1-8 cells).
+    double mean = 0;
+    for (int e = 0; e < ne; ++e) mean += (mesh.points.row(topo.edges(e, 0)) - mesh.points.row(topo.edges(e, 1))).norm() / ne;
+    const Eigen::Vector3d lo = mesh.points.colwise().minCoeff().transpose().array() - 1e-9;
+    const Eigen::Vector3d hi = mesh.points.colwise().maxCoeff().transpose().array() + 1e-9;
+    double cell = std::max(mean, 1e-12);
+    while (((hi - lo) / cell).array().ceil().prod() > 8e6) cell *= 2;
+    Eigen::Vector3i dims;
+    for (int k = 0; k < 3; ++k) dims[k] = std::max(1, int(std::ceil((hi[k] - lo[k]) / cell)));
+    auto range = [&](Eigen::Vector3d a, Eigen::Vector3d b, Eigen::Vector3i& i0, Eigen::Vector3i& i1) {
+        for (int k = 0; k < 3; ++k) {
+            if (b[k] < lo[k] || a[k] > hi[k]) return false;
+            i0[k] = std::clamp(int((a[k] - lo[k]) / cell), 0, dims[k] - 1);
+            i1[k] = std::clamp(int((b[k] - lo[k]) / cell), 0, dims[k] - 1);
         }
+        return true;
+    };
+    auto id = [&](int i, int j, int k) { return (size_t(k) * dims[1] + j) * dims[0] + i; };
+    const size_t ncell = size_t(dims[0]) * dims[1] * dims[2];
+    std::vector<int> start(ncell + 1, 0), items;
+    auto corner = [&](int t, int k) { return Eigen::Vector3d(sheets.points.row(sheets.triangles(t, k)).transpose()); };
+    const double pad = 1e-7;
+    for (int pass = 0; pass < 2; ++pass) {
+        if (pass == 1) {
+            for (size_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
+            items.resize(start[ncell]);
+        }
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (int t = 0; t < nt; ++t) {
+            Eigen::Vector3i i0, i1;
+            const Eigen::Vector3d a = corner(t, 0).cwiseMin(corner(t, 1)).cwiseMin(corner(t, 2)).array() - pad;
+            const Eigen::Vector3d b = corner(t, 0).cwiseMax(corner(t, 1)).cwiseMax(corner(t, 2)).array() + pad;
+            if (!range(a, b, i0, i1)) continue;
+            for (int k = i0[2]; k <= i1[2]; ++k)
+                for (int j = i0[1]; j <= i1[1]; ++j)
+                    for (int i = i0[0]; i <= i1[0]; ++i) {
+                        if (pass == 0) start[id(i, j, k) + 1] += 1;
+                        else items[fill[id(i, j, k)]++] = t;
+                    }
+        }
+    }
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads > 0 ? threads : omp_get_max_threads())
+    for (int e = 0; e < ne; ++e) {
+        const Eigen::Vector3d o = mesh.points.row(topo.edges(e, 0)).transpose();
+        const Eigen::Vector3d d = mesh.points.row(topo.edges(e, 1)).transpose() - o;
+        Eigen::Vector3i i0, i1;
+        if (!range(o.cwiseMin(o + d), o.cwiseMax(o + d), i0, i1)) continue;
+        for (int k = i0[2]; k <= i1[2] && !cut[e]; ++k)
+            for (int j = i0[1]; j <= i1[1] && !cut[e]; ++j)
+                for (int i = i0[0]; i <= i1[0] && !cut[e]; ++i) {
+                    const size_t c = id(i, j, k);
+                    for (int s = start[c]; s < start[c + 1]; ++s) {
+                        const int t = items[s];
+                        if (segment_hits(o, d, corner(t, 0), corner(t, 1), corner(t, 2))) { cut[e] = 1; break; }
+                    }
+                }
     }
     return cut;
 }

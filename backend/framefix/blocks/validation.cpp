@@ -6,6 +6,8 @@
 #include <numeric>
 #include <set>
 #include <unordered_map>
+#include <cstdio>
+#include <cstdlib>
 
 namespace framefix {
 
@@ -91,8 +93,12 @@ void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, 
         const int n = renumber(patch);
         const PatchStats s = patch_stats(S, adj, patch, n);
         int small = -1;
-        for (int p = 0; p < n; ++p)
-            if (s.area[p] < o.patch_merge_area * h * h && !s.contact[p].empty() && (small < 0 || s.area[p] < s.area[small])) small = p;
+        for (int p = 0; p < n; ++p) {
+            // A face of a hexahedron has 4 neighbouring faces: a small patch with <= 2 is a sliver
+            // where 4 blocks meet along a line (two sheets crossing), not a face.
+            const double limit = (s.contact[p].size() <= 2 ? o.sliver_area : o.patch_merge_area) * h * h;
+            if (s.area[p] < limit && !s.contact[p].empty() && (small < 0 || s.area[p] < s.area[small])) small = p;
+        }
         if (small < 0) break;
         const int target = longest_contact(s.contact[small]);
         for (int& p : patch) if (p == small) p = target;
@@ -173,6 +179,21 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
     for (int i = 0; i < nf; ++i) label[i] = S[i].label;
     std::vector<int> patch = components(nf, adj, label);
     clean_patches(mesh, S, adj, h, o, patch);
+    if (getenv("FFDBG")) {  // DEBUG
+        const int n = renumber(patch);
+        const PatchStats s = patch_stats(S, adj, patch, n);
+        std::vector<std::map<int,int>> votes(n);
+        std::vector<Eigen::Vector3d> nn(n, Eigen::Vector3d::Zero());
+        for (int i = 0; i < nf; ++i) votes[patch[i]][S[i].label] += 1, nn[patch[i]] += S[i].normal;
+        fprintf(stderr, "block with %d tris\n", nf);
+        for (int p = 0; p < n; ++p) {
+            fprintf(stderr, "  patch %d area %.4f per %.3f w/h %.2f n (%.2f %.2f %.2f) labels:", p, s.area[p], s.perimeter[p], 2*s.area[p]/s.perimeter[p]/h, nn[p].normalized().x(), nn[p].normalized().y(), nn[p].normalized().z());
+            for (auto [l,c] : votes[p]) fprintf(stderr, " %d:%d", l, c);
+            fprintf(stderr, " contacts:");
+            for (auto [q,l] : s.contact[p]) fprintf(stderr, " %d:%.3f", q, l);
+            fprintf(stderr, "\n");
+        }
+    }
     const int np = nf ? *std::max_element(patch.begin(), patch.end()) + 1 : 0;
     info.faces = np;
 

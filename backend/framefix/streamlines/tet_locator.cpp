@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>
+
 namespace framefix {
 
 TetLocator::TetLocator(const TetMesh& mesh, const TetTopology& topo) : mesh_(mesh) {
