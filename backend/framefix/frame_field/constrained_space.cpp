@@ -106,7 +106,8 @@ double dot(const FrameCoefficients& a, const FrameCoefficients& b, int threads) 
     });
 }
 
-double dirichlet_energy(const P1System& sys, const FrameCoefficients& q, int threads) {
+// AVX2+FMA clone, as the CG kernels (projected_cg.cpp).
+__attribute__((target_clones("arch=x86-64-v3", "default"))) double dirichlet_energy(const P1System& sys, const FrameCoefficients& q, int threads) {
     const double* Q = q.data();
     return blocked_sum(sys.rows(), threads, [&](int i) {  // q_i . (K q)_i, no #V x 9 temporary
         double acc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};

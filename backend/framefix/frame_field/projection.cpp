@@ -48,7 +48,7 @@ Eigen::Matrix3d rodrigues(const Eigen::Vector3d& w) {
 
 // L v for the three generators (each L_i is sparse; the dense 9x9 product is still a few ns).
 inline void apply_generators(const SH9& v, SH9 (&Lv)[3]) {
-    for (int i = 0; i < 3; ++i) Lv[i].noalias() = sh_generator(i) * v;
+    for (int i = 0; i < 3; ++i) Lv[i].noalias() = sh_generator(i).lazyProduct(v);  // unrolled, not GEMV
 }
 
 struct NewtonResult {
