@@ -256,6 +256,10 @@ class Objects(unittest.TestCase):
         self.assertEqual((curves.Curves35, curves.Before35), (0, 1))
         self.assertEqual(curves.getParentGroup().Label, "FrameFix correction (snap) of Bracket")
 
+    def test_correction_shows_the_snapped_paths(self):
+        analysis.make_analysis(self.box, 0.5, method="snap")
+        self.assertEqual(len(self.doc.getObject("SnappedPaths").Shape.Edges), 1)
+
     def test_changing_the_method_reruns_with_it(self):
         curves = analysis.make_analysis(self.box, 0.5, method="snap")
         curves.Method = "fillet"

@@ -67,6 +67,10 @@ def scenario(h):
     h.check(corrected.Before35 == 1 and corrected.Curves35 == 0,
             "snapping removes the notch's 3-5 curve: %d before, %d after"
             % (corrected.Before35, corrected.Curves35))
+    paths = [o for o in corrected.InList
+             if type(getattr(o, "Proxy", None)).__name__ == "SnappedPaths"]
+    h.check(len(paths) == 1 and len(paths[0].Shape.Edges) > 0,
+            "the snapped path is shown on the boundary")
     curves.getParentGroup().ViewObject.Visibility = False
     h.expand_tree()
     yield 0.5

@@ -117,9 +117,16 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
         features = _add(doc, "Part::FeaturePython", "FeatureCurves", "Feature curves",
                         FeatureCurves, "feature_curves", "ViewProviderFeatureCurves")
         nodes.Analysis = features.Analysis = curves
-        group.addObjects([curves, nodes, features])
+        parts = [curves, nodes, features]
+        if method:
+            from .objects.snapped_paths import SnappedPaths
+            paths = _add(doc, "Part::FeaturePython", "SnappedPaths", "Snapped paths",
+                         SnappedPaths, "snapped_paths", "ViewProviderSnappedPaths")
+            paths.Analysis = curves
+            parts.append(paths)
+        group.addObjects(parts)
         _fade_source(curves, source)
-        _recompute(doc, [curves, nodes, features])
+        _recompute(doc, parts)
     return curves
 
 

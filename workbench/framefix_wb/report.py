@@ -84,8 +84,12 @@ def _correction(c):
     if not isinstance(c, dict) or not isinstance(c.get("before"), dict) or not isinstance(
             c["before"].get("curves_3_5"), int):
         _fail("correction.before.curves_3_5 is not an integer")
+    paths = [{"source_curve": int(p.get("source_curve", -1)) if isinstance(p, dict) else -1,
+              "points": _points(p.get("points", []) if isinstance(p, dict) else None,
+                                "correction.snapped_paths[%d]" % i)}
+             for i, p in enumerate(c.get("snapped_paths") or [])]
     return {"method": str(c.get("method", "")), "before": dict(c["before"]),
-            "changed_curves": int(c.get("changed_curves", 0))}
+            "changed_curves": int(c.get("changed_curves", 0)), "snapped_paths": paths}
 
 
 def load_report(path):

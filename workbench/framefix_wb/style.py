@@ -19,6 +19,7 @@ FEATURE_COLORS = {
     4: ((0.00, 0.60, 0.60), "valence 4"),
 }
 OTHER = (0.3, 0.3, 0.3)
+SNAPPED_PATH_COLOR = (1.00, 0.55, 0.00)  # where a correction moved a 3-5 curve to
 CURVE_LINE_WIDTH = 4.0
 FEATURE_LINE_WIDTH = 2.0
 NODE_POINT_SIZE = 9.0

@@ -54,7 +54,9 @@ def main(argv):
     os.makedirs(out, exist_ok=True)
     if argv[0] == "correct":  # the 3-5 curve is gone after the correction
         report["correction"] = {"method": argv[argv.index("--method") + 1],
-                                "before": dict(summary), "changed_curves": 1}
+                                "before": dict(summary), "changed_curves": 1,
+                                "snapped_paths": [{"source_curve": 2, "points": [
+                                    [0.5, 0.0, 0.1], [0.5, 0.0, 0.9]]}]}
         report["singularities"]["curves"] = curves[:2]
         report["singularities"]["summary"] = dict(summary, curves=2, curves_3_5=0,
                                                   invalid_nodes=0, meshable=True)

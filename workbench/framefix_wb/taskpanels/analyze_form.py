@@ -109,7 +109,9 @@ class AnalyzeForm(QtWidgets.QWidget):
             "<br>%s<br>%s" % (
                 verdict, before, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],
                 s["invalid_nodes"], style.legend_html(style.CURVE_COLORS, kinds),
-                style.legend_html(style.NODE_COLORS)))
+                style.legend_html(dict(style.NODE_COLORS, **(
+                    {"paths": (style.SNAPPED_PATH_COLOR, "snapped path")} if correction
+                    else {})))))
         self.estimate.setText("{:,} tets, size {:.4g} (this run)".format(
             int(mesh.get("tets", 0)), float(mesh.get("size", 0))))
         self.bar.setValue(1000)
