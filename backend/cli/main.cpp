@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "framefix/core/error.h"
+#include "framefix/pipeline/block_stage.h"
 #include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/pipeline/report.h"
@@ -44,10 +45,11 @@ framefix::AnalysisOptions options_from(const Args& a) {
     return o;
 }
 
-int finish(const framefix::AnalysisResult& r, const Args& a, const framefix::Correction* c = nullptr) {
+int finish(const framefix::AnalysisResult& r, const Args& a, const framefix::Correction* c = nullptr,
+           const framefix::BlockDecomposition* b = nullptr) {
     const std::string out = a.out.empty() ? "framefix-out" : a.out;
-    framefix::write_outputs(r, out, c);
-    std::cout << framefix::human_summary(r, c) << "\n";
+    framefix::write_outputs(r, out, c, b);
+    std::cout << framefix::human_summary(r, c, b) << "\n";
     std::cout << "results: " << out << "/report.json\n";
     return 0;
 }
@@ -73,6 +75,10 @@ int main(int argc, char** argv) {
     add_common(correct, a);
     correct->add_option("--method", a.method, "snap (default), fillet, extrude-curves, extrude-nodes")
         ->check(CLI::IsMember({"snap", "fillet", "extrude-curves", "extrude-nodes"}));
+    auto* blocks = app.add_subcommand("blocks", "analyze, correct (snap), then cut the part into blocks");
+    add_common(blocks, a);
+    blocks->add_option("--method", a.method, "correction before the blocks: snap (default) or none")
+        ->check(CLI::IsMember({"snap", "none"}));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -91,6 +97,18 @@ int main(int argc, char** argv) {
             auto r = framefix::analyze(a.part, o);
             const auto c = framefix::correct(r, co, o);
             return finish(r, a, &c);
+        }
+        if (blocks->parsed()) {
+            auto r = framefix::analyze(a.part, o);
+            if (a.method == "none") {
+                const auto b = framefix::decompose(r, nullptr, o);
+                return finish(r, a, nullptr, &b);
+            }
+            framefix::CorrectionOptions co;
+            co.method = a.method;
+            const auto c = framefix::correct(r, co, o);
+            const auto b = framefix::decompose(r, &c, o);
+            return finish(r, a, &c, &b);
         }
         return finish(framefix::analyze(a.part, o), a);
     } catch (const framefix::Error& e) {

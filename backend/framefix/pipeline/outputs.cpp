@@ -109,9 +109,39 @@ VtkGrid paths_grid(const SnapResult& snap) {
     return g;
 }
 
+// Tets labelled by block, and the separatrix sheets.
+VtkGrid blocks_grid(const TetMesh& m, const BlockDecomposition& b) {
+    VtkGrid g;
+    g.points = m.points;
+    VtkArray block{"block", 1, {}}, valid{"block_valid", 1, {}};
+    for (int t = 0; t < m.num_tets(); ++t) {
+        g.cells.push_back({m.tets(t, 0), m.tets(t, 1), m.tets(t, 2), m.tets(t, 3)});
+        g.cell_types.push_back(kVtkTet);
+        const int id = b.tet_block(t);
+        block.data.push_back(id);
+        valid.data.push_back(id >= 0 && id < int(b.blocks.size()) && b.blocks[id].valid);
+    }
+    g.cell_data = {block, valid};
+    return g;
+}
+
+VtkGrid sheets_grid(const SheetSoup& s) {
+    VtkGrid g;
+    g.points = s.points;
+    VtkArray source{"source", 1, {}};
+    for (int t = 0; t < s.triangles.rows(); ++t) {
+        g.cells.push_back({s.triangles(t, 0), s.triangles(t, 1), s.triangles(t, 2)});
+        g.cell_types.push_back(kVtkTriangle);
+        source.data.push_back(s.source(t));
+    }
+    g.cell_data = {source};
+    return g;
+}
+
 }  // namespace
 
-std::vector<std::string> write_outputs(const AnalysisResult& r, const std::string& dir, const Correction* correction) {
+std::vector<std::string> write_outputs(const AnalysisResult& r, const std::string& dir, const Correction* correction,
+                                       const BlockDecomposition* blocks) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw Error("output", "cannot create folder " + dir + ": " + ec.message());
@@ -132,8 +162,14 @@ std::vector<std::string> write_outputs(const AnalysisResult& r, const std::strin
         written.push_back(path("singular_curves_before.vtk"));
         written.push_back(path("snapped_curves.vtk"));
     }
+    if (blocks) {
+        write_vtk(blocks_grid(r.mesh, *blocks), path("blocks.vtk"), "FrameFix blocks (tets labelled by block)");
+        write_vtk(sheets_grid(blocks->sheets), path("sheets.vtk"), "FrameFix separatrix sheets");
+        written.push_back(path("blocks.vtk"));
+        written.push_back(path("sheets.vtk"));
+    }
     std::ofstream out(path("report.json"));
-    out << report_json(r, correction) << '\n';
+    out << report_json(r, correction, blocks) << '\n';
     if (!out) throw Error("output", "cannot write " + path("report.json"));
     written.push_back(path("report.json"));
     return written;

@@ -87,9 +87,32 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"curves_before", singularities_json(c.graph_before)["curves"]}};
 }
 
+json blocks_json(const BlockDecomposition& b) {
+    json blocks = json::array(), pairs = json::array();
+    for (size_t i = 0; i < b.blocks.size(); ++i) {
+        const auto& k = b.blocks[i];
+        blocks.push_back({{"id", i},             {"tets", k.tets.size()},   {"volume", k.volume},
+                          {"valid", k.valid},    {"faces", k.faces},        {"edges", k.edges},
+                          {"corners", k.corners}, {"flat_edges", k.flat_edges}, {"flat_corners", k.flat_corners},
+                          {"neighbours", k.neighbours}, {"centroid", point(k.centroid)}, {"reason", k.reason}});
+    }
+    for (const auto& p : b.neighbour_pairs)
+        pairs.push_back({{"blocks", json::array({p.a, p.b})}, {"conforming", p.conforming}, {"reason", p.reason}});
+    return {{"count", b.count},
+            {"valid", b.valid},
+            {"conforming_pairs", b.conforming_pairs},
+            {"pairs", b.pairs},
+            {"flat_corners", b.flat_corners},
+            {"flat_edges", b.flat_edges},
+            {"blocks", blocks},
+            {"neighbour_pairs", pairs},
+            {"seconds", {{"sheets", b.seconds_sheets}, {"partition", b.seconds_partition},
+                         {"validation", b.seconds_validation}, {"total", b.seconds}}}};
+}
+
 }  // namespace
 
-std::string report_json(const AnalysisResult& r, const Correction* correction) {
+std::string report_json(const AnalysisResult& r, const Correction* correction, const BlockDecomposition* blocks) {
     json j;
     j["version"] = 1;
     j["input"] = {{"path", r.input_path}, {"kind", r.input_kind}};
@@ -102,16 +125,18 @@ std::string report_json(const AnalysisResult& r, const Correction* correction) {
                       {"solver", r.field.solver}};
     if (r.has_singularities) j["singularities"] = singularities_json(r.singularities);
     if (correction) j["correction"] = correction_json(*correction, r.singularities.summary);
+    if (blocks) j["blocks"] = blocks_json(*blocks);
     json t = {{"load", r.timings.load}, {"mesh", r.timings.mesh}, {"total", r.timings.total}};
     if (r.has_field) t["field"] = r.timings.field;
     if (r.has_singularities) t["singularities"] = r.timings.singularities;
     if (correction) t["correct"] = correction->seconds;
+    if (blocks) t["blocks"] = blocks->seconds;
     j["timings_s"] = t;
     j["peak_memory_mb"] = r.peak_memory_mb;
     return j.dump(1);
 }
 
-std::string human_summary(const AnalysisResult& r, const Correction* correction) {
+std::string human_summary(const AnalysisResult& r, const Correction* correction, const BlockDecomposition* blocks) {
     const std::string name = std::filesystem::path(r.input_path.empty() ? "shape" : r.input_path).filename();
     char tets[32];
     const int nt = r.mesh.num_tets();
@@ -139,8 +164,14 @@ std::string human_summary(const AnalysisResult& r, const Correction* correction)
         s += "; before " + correction->method + ": " + std::to_string(b.curves_3_5) + " 3-5 curve" +
              (b.curves_3_5 == 1 ? "" : "s") + ", " + std::to_string(correction->snap.snapped_curve_ids.size()) + " snapped";
     }
+    if (blocks) {
+        s += "; " + std::to_string(blocks->count) + " block" + (blocks->count == 1 ? "" : "s") + ", " +
+             (blocks->valid == blocks->count ? std::string("all valid") : std::to_string(blocks->valid) + " valid") +
+             ", " + std::to_string(blocks->conforming_pairs) + "/" + std::to_string(blocks->pairs) + " pairs conforming";
+        if (blocks->flat_edges) s += ", " + std::to_string(blocks->flat_edges) + " flat edge" + (blocks->flat_edges == 1 ? "" : "s");
+    }
     char t[32];
-    std::snprintf(t, sizeof t, "; %.1f s", r.timings.total);
+    std::snprintf(t, sizeof t, "; %.1f s", r.timings.total + (blocks ? blocks->seconds : 0.0));
     return s + t;
 }
 

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "framefix/pipeline/block_stage.h"
 #include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 
@@ -11,11 +12,14 @@ namespace framefix {
 // The report as JSON text. Sections a result does not have (no field yet, ...) are absent.
 // With a correction, "singularities" is the corrected graph and "correction" holds the before
 // and after summaries and the snapped paths.
-std::string report_json(const AnalysisResult& result, const Correction* correction = nullptr);
+// With blocks, the "blocks" section holds the decomposition and its validation.
+std::string report_json(const AnalysisResult& result, const Correction* correction = nullptr,
+                        const BlockDecomposition* blocks = nullptr);
 
 // Writes DIR/report.json and the VTK files; returns the paths written. Creates DIR.
 std::vector<std::string> write_outputs(const AnalysisResult& result, const std::string& dir,
-                                       const Correction* correction = nullptr);
+                                       const Correction* correction = nullptr,
+                                       const BlockDecomposition* blocks = nullptr);
 
 // Feature curves as ordered polylines of mesh vertices, one per B-rep edge tag.
 struct FeaturePolyline {
@@ -25,6 +29,7 @@ struct FeaturePolyline {
 std::vector<FeaturePolyline> feature_polylines(const TetMesh& mesh);
 
 // "notch.step: 58k tets, 1 singular curve: 1 3-5 curve (not hex-meshable); 0.6 s"
-std::string human_summary(const AnalysisResult& result, const Correction* correction = nullptr);
+std::string human_summary(const AnalysisResult& result, const Correction* correction = nullptr,
+                          const BlockDecomposition* blocks = nullptr);
 
 }  // namespace framefix
