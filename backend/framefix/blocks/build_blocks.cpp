@@ -1,7 +1,5 @@
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <numeric>
 #include <set>
 #include <unordered_map>
@@ -98,14 +96,9 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     // Partition.
     const auto t1 = Clock::now();
     std::vector<char> cut = cut_by_sheets(mesh, topo, out.sheets, options.threads);
-    if (getenv("FFDBG")) fprintf(stderr, "cut %.3f\n", since(t1));
     cut_near_polylines(mesh, topo, singular, options.tube_radius * h, cut);
-    if (getenv("FFDBG")) fprintf(stderr, "tube %.3f\n", since(t1));
     out.stats.cut_edges = int(std::count(cut.begin(), cut.end(), 1));
-    auto pt = partition_tets(mesh, topo, cut, options);
-    if (getenv("FFDBG")) fprintf(stderr, "part %.3f\n", since(t1));
-    out.tet_block = clean_staircase(mesh, topo, pt);
-    if (getenv("FFDBG")) fprintf(stderr, "clean %.3f\n", since(t1));
+    out.tet_block = clean_staircase(mesh, topo, partition_tets(mesh, topo, cut, options));
     out.count = compact_labels(out.tet_block);
     out.seconds_partition = since(t1);
 

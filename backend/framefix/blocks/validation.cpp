@@ -6,8 +6,6 @@
 #include <numeric>
 #include <set>
 #include <unordered_map>
-#include <cstdio>
-#include <cstdlib>
 
 namespace framefix {
 
@@ -179,21 +177,6 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
     for (int i = 0; i < nf; ++i) label[i] = S[i].label;
     std::vector<int> patch = components(nf, adj, label);
     clean_patches(mesh, S, adj, h, o, patch);
-    if (getenv("FFDBG")) {  // DEBUG
-        const int n = renumber(patch);
-        const PatchStats s = patch_stats(S, adj, patch, n);
-        std::vector<std::map<int,int>> votes(n);
-        std::vector<Eigen::Vector3d> nn(n, Eigen::Vector3d::Zero());
-        for (int i = 0; i < nf; ++i) votes[patch[i]][S[i].label] += 1, nn[patch[i]] += S[i].normal;
-        fprintf(stderr, "block with %d tris\n", nf);
-        for (int p = 0; p < n; ++p) {
-            fprintf(stderr, "  patch %d area %.4f per %.3f w/h %.2f n (%.2f %.2f %.2f) labels:", p, s.area[p], s.perimeter[p], 2*s.area[p]/s.perimeter[p]/h, nn[p].normalized().x(), nn[p].normalized().y(), nn[p].normalized().z());
-            for (auto [l,c] : votes[p]) fprintf(stderr, " %d:%d", l, c);
-            fprintf(stderr, " contacts:");
-            for (auto [q,l] : s.contact[p]) fprintf(stderr, " %d:%.3f", q, l);
-            fprintf(stderr, "\n");
-        }
-    }
     const int np = nf ? *std::max_element(patch.begin(), patch.end()) + 1 : 0;
     info.faces = np;
 

@@ -1,0 +1,177 @@
+// Block decompositions with known answers (ALGORITHMS.md section 0, §8): the cube is one block,
+// the L-shaped prism three, the cylinder five (a centre block and four around it; needs h <= 0.035
+// so that the outer blocks are >= 3 elements thick), the notch after boundary snapping seven, all
+// valid hexahedra, all neighbour pairs conforming, with the flat edge under the pocket reported.
+// Every decomposition must cover the part exactly once with face-connected blocks.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
+#include <numeric>
+
+#include "backend/corrections/cube_fixture.h"
+#include "framefix/blocks/blocks.h"
+#include "framefix/core/error.h"
+#include "framefix/pipeline/correction.h"
+#include "framefix/pipeline/pipeline.h"
+
+namespace framefix {
+namespace {
+
+std::string sample(const std::string& name) { return std::string(FRAMEFIX_SAMPLES_DIR) + "/" + name + ".step"; }
+
+struct SampleRun {
+    AnalysisResult result;
+    std::vector<SnappedPath> paths;
+    BlockDecomposition blocks;
+};
+
+// One pipeline run per sample and mesh size, shared by the tests of this file.
+const SampleRun& run(const std::string& name, double size) {
+    static std::map<std::pair<std::string, double>, std::unique_ptr<SampleRun>> cache;
+    auto& slot = cache[{name, size}];
+    if (!slot) {
+        slot = std::make_unique<SampleRun>();
+        AnalysisOptions options;
+        options.mesh.size = size;
+        slot->result = analyze(sample(name), options);
+        if (slot->result.singularities.summary.curves_3_5 > 0)
+            slot->paths = correct(slot->result, CorrectionOptions{}, options).snap.paths;
+        const AnalysisResult& r = slot->result;
+        slot->blocks = build_blocks(r.mesh, r.topology, r.features, r.field, r.singularities, slot->paths);
+    }
+    return *slot;
+}
+
+// Every tet in exactly one block, blocks face-connected, tet lists consistent with tet_block.
+void expect_partition(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& d) {
+    ASSERT_EQ(d.tet_block.size(), mesh.num_tets());
+    ASSERT_EQ(int(d.blocks.size()), d.count);
+    EXPECT_GE(d.tet_block.minCoeff(), 0);
+    EXPECT_LT(d.tet_block.maxCoeff(), d.count);
+    size_t listed = 0;
+    double volume = 0, total = 0;
+    for (int b = 0; b < d.count; ++b) {
+        listed += d.blocks[b].tets.size();
+        volume += d.blocks[b].volume;
+        for (int t : d.blocks[b].tets) EXPECT_EQ(d.tet_block[t], b);
+    }
+    EXPECT_EQ(listed, size_t(mesh.num_tets()));
+    for (int t = 0; t < mesh.num_tets(); ++t) total += tet_volume(mesh, t);
+    EXPECT_NEAR(volume, total, 1e-9 * total);
+    // Face-connectivity: union-find over faces inside one block gives one component per block.
+    std::vector<int> parent(mesh.num_tets());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
+    for (int f = 0; f < int(topo.face_tets.rows()); ++f) {
+        const int a = topo.face_tets(f, 0), b = topo.face_tets(f, 1);
+        if (b >= 0 && d.tet_block[a] == d.tet_block[b]) parent[find(a)] = find(b);
+    }
+    for (int b = 0; b < d.count; ++b) {
+        const int root = find(d.blocks[b].tets.front());
+        for (int t : d.blocks[b].tets) ASSERT_EQ(find(t), root) << "block " << b << " is not face-connected";
+    }
+}
+
+void expect_all_valid(const BlockDecomposition& d) {
+    EXPECT_EQ(d.valid, d.count);
+    for (int b = 0; b < d.count; ++b) {
+        const BlockInfo& i = d.blocks[b];
+        EXPECT_TRUE(i.valid) << "block " << b << ": " << i.reason;
+        EXPECT_EQ(i.faces, 6);
+        EXPECT_EQ(i.edges, 12);
+        EXPECT_EQ(i.corners, 8);
+        EXPECT_EQ(i.euler, 2);
+        EXPECT_TRUE(i.manifold);
+    }
+}
+
+TEST(Blocks, CubeFixtureWithoutSingularitiesIsOneBlock) {
+    const test::Cube c = test::cube_tets(6);
+    const BlockDecomposition d = build_blocks(c.mesh, c.topo, c.features, c.field, SingularityGraph{}, {});
+    EXPECT_EQ(d.count, 1);
+    expect_all_valid(d);
+    EXPECT_EQ(d.pairs, 0);
+    EXPECT_EQ(d.flat_edges, 0);
+    EXPECT_EQ(d.sheets.triangles.rows(), 0);
+    expect_partition(c.mesh, c.topo, d);
+}
+
+TEST(Blocks, RejectsAFieldOfAnotherMesh) {
+    const test::Cube c = test::cube_tets(3), other = test::cube_tets(2);
+    EXPECT_THROW(build_blocks(c.mesh, c.topo, c.features, other.field, SingularityGraph{}, {}), Error);
+}
+
+TEST(BlocksOnSamples, CubeIsOneValidBlock) {
+    const SampleRun& r = run("cube", 0.08);
+    EXPECT_EQ(r.blocks.count, 1);
+    expect_all_valid(r.blocks);
+    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+}
+
+TEST(BlocksOnSamples, LPrismIsThreeConformingBlocks) {
+    const SampleRun& r = run("l_prism", 0.05);
+    EXPECT_EQ(r.blocks.count, 3);
+    expect_all_valid(r.blocks);
+    EXPECT_EQ(r.blocks.pairs, 2);
+    EXPECT_EQ(r.blocks.conforming_pairs, 2);
+    EXPECT_EQ(r.blocks.flat_edges, 0);
+    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+}
+
+TEST(BlocksOnSamples, CylinderIsACentreAndFourBlocks) {
+    const SampleRun& r = run("cylinder", 0.035);
+    ASSERT_EQ(r.result.singularities.summary.valence3, 4);
+    EXPECT_EQ(r.blocks.count, 5);
+    expect_all_valid(r.blocks);
+    EXPECT_EQ(r.blocks.pairs, 8);  // centre-outer 4, outer-outer 4
+    EXPECT_EQ(r.blocks.conforming_pairs, r.blocks.pairs);
+    // The centre block touches the four others, and contains the axis.
+    int centre = -1;
+    for (int b = 0; b < r.blocks.count; ++b)
+        if (r.blocks.blocks[b].neighbours.size() == 4) centre = b;
+    ASSERT_GE(centre, 0);
+    EXPECT_LT(r.blocks.blocks[centre].centroid.head<2>().norm(), 0.05);
+    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+}
+
+TEST(BlocksOnSamples, SnappedNotchIsSevenConformingBlocks) {
+    const SampleRun& r = run("notch", 0.05);
+    ASSERT_EQ(r.paths.size(), 1u);
+    EXPECT_EQ(r.result.singularities.summary.curves_3_5, 0);
+    EXPECT_EQ(r.blocks.count, 7);
+    expect_all_valid(r.blocks);
+    EXPECT_EQ(r.blocks.pairs, 9);
+    EXPECT_EQ(r.blocks.conforming_pairs, 9);
+    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+}
+
+TEST(BlocksOnSamples, SnappedNotchReportsTheFlatEdgeUnderThePocket) {
+    const SampleRun& r = run("notch", 0.05);
+    // The block under the pocket (x, y > 0.5, z < 0.5) has two faces on the continuation of the
+    // pocket wall, split by the snapped path's sheets: a flat (180 deg) edge between them.
+    int flat_under_pocket = 0, flat_elsewhere = 0;
+    for (const BlockInfo& b : r.blocks.blocks) {
+        const bool under = b.centroid.x() > 0.5 && b.centroid.y() > 0.5 && b.centroid.z() < 0.5;
+        (under ? flat_under_pocket : flat_elsewhere) += b.flat_edges;
+    }
+    EXPECT_GE(flat_under_pocket, 1);
+    EXPECT_EQ(flat_elsewhere, 0);
+}
+
+TEST(BlocksOnSamples, SheetsAreTaggedWithTheirSources) {
+    const SampleRun& r = run("notch", 0.05);
+    const SheetSoup& s = r.blocks.sheets;
+    ASSERT_GT(s.triangles.rows(), 0);
+    EXPECT_EQ(s.source.size(), s.triangles.rows());
+    EXPECT_GE(s.source.minCoeff(), 0);
+    EXPECT_LT(s.source.maxCoeff(), int(s.source_kind.size()));
+    EXPECT_LT(s.triangles.maxCoeff(), s.points.rows());
+    bool concave = false, snapped = false;
+    for (const std::string& k : s.source_kind) concave |= k.rfind("concave:", 0) == 0, snapped |= k.rfind("snapped:", 0) == 0;
+    EXPECT_TRUE(concave);
+    EXPECT_TRUE(snapped);
+}
+
+}  // namespace
+}  // namespace framefix
