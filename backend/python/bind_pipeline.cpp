@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "framefix/pipeline/block_stage.h"
 #include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/pipeline/report.h"
@@ -58,6 +59,44 @@ void bind_pipeline(py::module_& m) {
              [](const Corrected& c, const std::string& dir) { return write_outputs(c.result, dir, &c.correction); },
              py::arg("folder"))
         .def_property_readonly("human_summary", [](const Corrected& c) { return human_summary(c.result, &c.correction); });
+    // Analysis, correction and blocks of one part.
+    struct BlockRun {
+        AnalysisResult result;
+        Correction correction;
+        bool corrected = false;
+        BlockDecomposition blocks;
+    };
+    py::class_<BlockRun>(m, "BlockRun", "A block decomposition (result = analysed and corrected part)")
+        .def_readonly("result", &BlockRun::result)
+        .def_property_readonly("tet_block", [](const BlockRun& b) { return b.blocks.tet_block; }, "#T block id per tet")
+        .def_property_readonly("count", [](const BlockRun& b) { return b.blocks.count; })
+        .def_property_readonly("valid", [](const BlockRun& b) { return b.blocks.valid; })
+        .def_property_readonly("report_json", [](const BlockRun& b) {
+            return report_json(b.result, b.corrected ? &b.correction : nullptr, &b.blocks);
+        })
+        .def("write_outputs",
+             [](const BlockRun& b, const std::string& dir) {
+                 return write_outputs(b.result, dir, b.corrected ? &b.correction : nullptr, &b.blocks);
+             },
+             py::arg("folder"))
+        .def_property_readonly("human_summary", [](const BlockRun& b) {
+            return human_summary(b.result, b.corrected ? &b.correction : nullptr, &b.blocks);
+        });
+    m.def(
+        "blocks_file",
+        [](const std::string& path, const std::string& method, double size, double size_factor, int threads) {
+            const auto o = make_options(size, size_factor, threads);
+            BlockRun b{analyze(path, o), {}, method != "none", {}};
+            if (b.corrected) {
+                CorrectionOptions co;
+                co.method = method;
+                b.correction = correct(b.result, co, o);
+            }
+            b.blocks = decompose(b.result, b.corrected ? &b.correction : nullptr, o);
+            return b;
+        },
+        py::arg("path"), py::arg("method") = "snap", py::arg("size") = 0.0, py::arg("size_factor") = 1.0,
+        py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
     m.def(
         "correct_file",
         [](const std::string& path, const std::string& method, double size, double size_factor, int threads) {

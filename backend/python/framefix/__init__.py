@@ -14,7 +14,7 @@ from ._core import (Error, Shape, EdgeFeature, TetMesh, FrameField, SingularityG
 __all__ = ["Error", "Shape", "TetMesh", "FrameField", "SingularityGraph", "Analysis",
            "load_shape", "load_brep_string", "to_brep_string", "classify_features",
            "default_size", "tetrahedralize", "mesh_quality", "solve_frame_field",
-           "extract_singularities", "mesh_part", "analyze", "correct", "report"]
+           "extract_singularities", "mesh_part", "analyze", "correct", "build_blocks", "report"]
 
 
 def analyze(part, size=None, size_factor=1.0, threads=0):
@@ -37,6 +37,15 @@ def correct(part, method="snap", size=None, size_factor=1.0, threads=0):
     ``correction`` section with the before and after summaries.
     """
     return _core.correct_file(str(part), method, float(size or 0.0), size_factor, threads)
+
+
+def build_blocks(part, method="snap", size=None, size_factor=1.0, threads=0):
+    """Analyse a CAD file, correct it (`method`: snap, or none), cut it into blocks.
+
+    Returns a ``BlockRun``: ``.tet_block`` (block id per tet), ``.count``, ``.valid``,
+    ``.result`` the corrected :class:`Analysis`; ``report(b)["blocks"]`` the validation.
+    """
+    return _core.blocks_file(str(part), method, float(size or 0.0), size_factor, threads)
 
 
 def report(result):

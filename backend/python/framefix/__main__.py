@@ -8,7 +8,7 @@ import sys
 
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python -m framefix")
-    parser.add_argument("command", choices=["mesh", "analyze", "correct"])
+    parser.add_argument("command", choices=["mesh", "analyze", "correct", "blocks"])
     parser.add_argument("part")
     parser.add_argument("--size", type=float, default=0.0)
     parser.add_argument("--size-factor", type=float, default=1.0)
@@ -23,6 +23,8 @@ def main(argv=None):
     try:
         if args.command == "mesh":
             result = framefix.mesh_part(args.part, args.size, args.size_factor, args.threads)
+        elif args.command == "blocks":
+            result = framefix.build_blocks(args.part, args.method, args.size, args.size_factor, args.threads)
         elif args.command == "correct":
             result = framefix.correct(args.part, args.method, args.size, args.size_factor, args.threads)
         else:
