@@ -1,27 +1,5 @@
-import json
-import os
-import subprocess
+import sys
 from pathlib import Path
 
-import pytest
-
-BIN = os.environ.get("FRAMEFIX_BIN", "framefix")
-SAMPLES = Path(os.environ.get("FRAMEFIX_SAMPLES", Path(__file__).parents[2] / "samples"))
-TESTDATA = Path(os.environ.get("FRAMEFIX_TESTDATA", Path(__file__).parents[1] / "data"))
-
-
-def run(*args, timeout=600):
-    """Runs the CLI; returns (exit code, stdout, stderr)."""
-    p = subprocess.run([BIN, *map(str, args)], capture_output=True, text=True, timeout=timeout)
-    return p.returncode, p.stdout, p.stderr
-
-
-@pytest.fixture
-def analyze(tmp_path):
-    """analyze(part, *flags) -> report dict, for a sample name or a path."""
-    def go(part, *flags, command="analyze"):
-        path = SAMPLES / part if not os.path.isabs(str(part)) else part
-        code, out, err = run(command, path, "--out", tmp_path / "out", "--quiet", *flags)
-        assert code == 0, err
-        return json.loads((tmp_path / "out" / "report.json").read_text())
-    return go
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from framefix_testing import BIN, SAMPLES, TESTDATA, analyze, run  # noqa: E402,F401

@@ -1,4 +1,5 @@
 #include "framefix/mesh/tet_mesh.h"
+#include "framefix/mesh/tet_topology.h"
 
 #include <algorithm>
 #include <array>
@@ -20,25 +21,16 @@ MeshQuality mesh_quality(const TetMesh& mesh) {
     MeshQuality q;
     if (mesh.num_tets() == 0) return q;
     q.min_volume = tet_volume(mesh, 0);
-    std::vector<std::array<int, 2>> edges;
-    for (int t = 0; t < mesh.num_tets(); ++t) {
-        q.min_volume = std::min(q.min_volume, tet_volume(mesh, t));
-        for (int a = 0; a < 4; ++a)
-            for (int b = a + 1; b < 4; ++b) {
-                int u = mesh.tets(t, a), v = mesh.tets(t, b);
-                edges.push_back({std::min(u, v), std::max(u, v)});
-            }
-    }
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    std::vector<double> len(edges.size());
+    for (int t = 0; t < mesh.num_tets(); ++t) q.min_volume = std::min(q.min_volume, tet_volume(mesh, t));
+    const Segments edges = build_topology(mesh).edges;
+    std::vector<double> len(size_t(edges.rows()));
     int in_range = 0;
-    for (size_t e = 0; e < edges.size(); ++e) {
-        len[e] = (mesh.points.row(edges[e][0]) - mesh.points.row(edges[e][1])).norm();
+    for (size_t e = 0; e < len.size(); ++e) {
+        len[e] = (mesh.points.row(edges(int(e), 0)) - mesh.points.row(edges(int(e), 1))).norm();
         in_range += len[e] >= 0.5 * mesh.size && len[e] <= 1.6 * mesh.size;
     }
-    q.edges = int(edges.size());
-    q.edge_fraction_in_range = double(in_range) / double(edges.size());
+    q.edges = int(len.size());
+    q.edge_fraction_in_range = double(in_range) / double(len.size());
     std::vector<double> sorted = len;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
     q.median_edge = sorted[sorted.size() / 2];

@@ -48,26 +48,35 @@ VtkGrid mesh_grid(const AnalysisResult& r) {
     return g;
 }
 
-VtkGrid curves_grid(const SingularityGraph& s) {
+// Polylines, one cell each, with one value per polyline for each named cell array.
+VtkGrid polylines_grid(const std::vector<const Points*>& lines, std::vector<VtkArray> cell_arrays) {
     VtkGrid g;
     int n = 0;
-    for (const auto& c : s.curves) n += int(c.points.rows());
+    for (const Points* p : lines) n += int(p->rows());
     g.points.resize(n, 3);
-    VtkArray kind{"kind", 1, {}}, id{"curve_id", 1, {}};
     int at = 0;
-    for (const auto& c : s.curves) {
+    for (const Points* p : lines) {
         std::vector<int> cell;
-        for (int i = 0; i < c.points.rows(); ++i, ++at) {
-            g.points.row(at) = c.points.row(i);
+        for (int i = 0; i < p->rows(); ++i, ++at) {
+            g.points.row(at) = p->row(i);
             cell.push_back(at);
         }
         g.cells.push_back(cell);
         g.cell_types.push_back(kVtkPolyline);
+    }
+    g.cell_data = std::move(cell_arrays);
+    return g;
+}
+
+VtkGrid curves_grid(const SingularityGraph& s) {
+    std::vector<const Points*> lines;
+    VtkArray kind{"kind", 1, {}}, id{"curve_id", 1, {}};
+    for (const auto& c : s.curves) {
+        lines.push_back(&c.points);
         kind.data.push_back(int(c.kind));
         id.data.push_back(c.id);
     }
-    g.cell_data = {kind, id};
-    return g;
+    return polylines_grid(lines, {kind, id});
 }
 
 VtkGrid nodes_grid(const SingularityGraph& s) {
@@ -88,25 +97,14 @@ VtkGrid nodes_grid(const SingularityGraph& s) {
 }
 
 VtkGrid paths_grid(const SnapResult& snap) {
-    VtkGrid g;
-    int n = 0;
-    for (const auto& p : snap.paths) n += int(p.points.rows());
-    g.points.resize(n, 3);
+    std::vector<const Points*> lines;
     VtkArray source{"source_curve", 1, {}}, forced{"forced", 1, {}};
-    int at = 0;
     for (const auto& p : snap.paths) {
-        std::vector<int> cell;
-        for (int i = 0; i < p.points.rows(); ++i, ++at) {
-            g.points.row(at) = p.points.row(i);
-            cell.push_back(at);
-        }
-        g.cells.push_back(cell);
-        g.cell_types.push_back(kVtkPolyline);
+        lines.push_back(&p.points);
         source.data.push_back(p.source_curve);
         forced.data.push_back(p.forced);
     }
-    g.cell_data = {source, forced};
-    return g;
+    return polylines_grid(lines, {source, forced});
 }
 
 // Tets labelled by block, and the separatrix sheets.
