@@ -17,13 +17,34 @@ from .runner import run_sync
 
 GROUP_LABEL = "FrameFix analysis of %s"
 CORRECTION_GROUP_LABEL = "FrameFix correction (%s) of %s"
+BLOCKS_GROUP_LABEL = "FrameFix blocks (%s) of %s"
+
+# The tet meshes of the last block runs, by input digest: report.json does not hold them
+# (blocks.vtk does), the Blocks object takes its run's mesh from here in the recompute that
+# follows the run. Saved documents keep the mesh in the Blocks object itself.
+_BLOCK_MESHES = {}
+_KEPT_BLOCK_MESHES = 3
 
 
-def input_digest(solid, size, method=""):
-    """What a run depends on: the solid's geometry, the size (None: the backend's default)
-    and the correction method ("" for an analysis)."""
+def remember_block_mesh(digest, report):
+    mesh = report.get("block_mesh")
+    if mesh is not None:
+        _BLOCK_MESHES.pop(digest, None)
+        _BLOCK_MESHES[digest] = mesh
+        while len(_BLOCK_MESHES) > _KEPT_BLOCK_MESHES:
+            del _BLOCK_MESHES[next(iter(_BLOCK_MESHES))]
+
+
+def block_mesh(digest):
+    """The tet mesh of the block run with input `digest`, or None if this session has none."""
+    return _BLOCK_MESHES.get(digest)
+
+
+def input_digest(solid, size, method="", blocks=False):
+    """What a run depends on: the solid's geometry, the size (None: the backend's default),
+    the correction method ("" for an analysis) and whether it cuts blocks."""
     digest = "%s size=%r" % (shapes.shape_digest(solid), float(size or 0.0))
-    return digest + (" method=%s" % method if method else "")
+    return digest + (" method=%s" % method if method else "") + (" blocks" if blocks else "")
 
 
 def _gui_idle():
@@ -33,14 +54,18 @@ def _gui_idle():
         QtWidgets.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents)
 
 
-def run_analysis(solid, size, backend=None, timeout=None, method=None):
+def run_analysis(solid, size, backend=None, timeout=None, method=None, blocks=False):
     """The checked report of the backend on `solid`; size None lets the backend choose
-    (about sizing.TARGET_TETS tets); with `method`, of a correction. Raises BackendError."""
-    job = AnalysisJob(solid, size, backend, timeout, method)
+    (about sizing.TARGET_TETS tets); with `method`, of a correction; with `blocks`, of a
+    block decomposition (its tet mesh remembered for the Blocks object). Raises BackendError."""
+    job = AnalysisJob(solid, size, backend, timeout, method, blocks)
     try:
-        return run_sync(job, on_idle=_gui_idle)
+        report = run_sync(job, on_idle=_gui_idle)
     finally:
         job.cleanup()
+    if blocks:
+        remember_block_mesh(input_digest(solid, size, method or "", True), report)
+    return report
 
 
 def _add(doc, type_name, name, label, proxy_class, vp_module, vp_class):
@@ -85,32 +110,45 @@ class _Transaction:
             self.doc.abortTransaction()
 
 
-def make_analysis(source, size=None, report=None, digest=None, backend=None, method=""):
+def _kind(method, blocks):
+    return "FrameFix blocks" if blocks else "FrameFix correction" if method else "FrameFix analysis"
+
+
+def make_analysis(source, size=None, report=None, digest=None, backend=None, method="",
+                  blocks=False):
     """Add the analysis group of `source` (a part, Body or Link); returns SingularCurves.
 
     `size` None (stored as Size 0) lets the backend pick it. Without `report` the backend
-    runs first (synchronously). With it, `digest` must be input_digest() of the solid, size
-    and method that report was computed from. With `method` ("snap", ...), a correction:
-    the curves are those after correcting, Before35 counts the 3-5 curves before.
+    runs first (synchronously). With it, `digest` must be input_digest() of the solid, size,
+    method and blocks that report was computed from. With `method` ("snap", ...), a
+    correction: the curves are those after correcting, Before35 counts the 3-5 curves before.
+    With `blocks` (method "snap", the default, or "none"), the part cut into blocks too: a
+    Blocks object (the tets coloured by block) beside the curves.
     """
     from .objects.feature_curves import FeatureCurves
     from .objects.singular_curves import SingularCurves
     from .objects.singular_nodes import SingularNodes
     solid = shapes.solid_of(source)
     size = float(size or 0.0)
+    if blocks:
+        method = method or "snap"
     if report is None:
-        report = run_analysis(solid, size or None, backend, method=method or None)
-        digest = input_digest(solid, size, method)
+        report = run_analysis(solid, size or None, backend, method=method or None, blocks=blocks)
+        digest = input_digest(solid, size, method, blocks)
+    elif blocks:
+        remember_block_mesh(digest, report)
+    corrected = method and method != "none"
     doc = source.Document
     label = shapes.label_of(source)
-    with _Transaction(doc, "FrameFix correction" if method else "FrameFix analysis"):
-        group = doc.addObject("App::DocumentObjectGroup",
+    with _Transaction(doc, _kind(method, blocks)):
+        group = doc.addObject("App::DocumentObjectGroup", "FrameFixBlocks" if blocks else
                               "FrameFixCorrection" if method else "FrameFixAnalysis")
-        group.Label = CORRECTION_GROUP_LABEL % (method, label) if method else GROUP_LABEL % label
+        group.Label = (BLOCKS_GROUP_LABEL % (method, label) if blocks else
+                       CORRECTION_GROUP_LABEL % (method, label) if method else GROUP_LABEL % label)
         curves = _add(doc, "Part::FeaturePython", "SingularCurves",
-                      "Corrected singular curves" if method else "Singular curves",
+                      "Corrected singular curves" if corrected else "Singular curves",
                       SingularCurves, "singular_curves", "ViewProviderSingularCurves")
-        curves.Source, curves.Size, curves.Method = source, size, method
+        curves.Source, curves.Size, curves.Blocks, curves.Method = source, size, blocks, method
         curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
         nodes = _add(doc, "Part::FeaturePython", "SingularNodes", "Singular nodes",
                      SingularNodes, "singular_nodes", "ViewProviderSingularNodes")
@@ -118,12 +156,18 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
                         FeatureCurves, "feature_curves", "ViewProviderFeatureCurves")
         nodes.Analysis = features.Analysis = curves
         parts = [curves, nodes, features]
-        if method:
+        if corrected:
             from .objects.snapped_paths import SnappedPaths
             paths = _add(doc, "Part::FeaturePython", "SnappedPaths", "Snapped paths",
                          SnappedPaths, "snapped_paths", "ViewProviderSnappedPaths")
             paths.Analysis = curves
             parts.append(paths)
+        if blocks:
+            from .objects.blocks import Blocks
+            cut = _add(doc, "Fem::FemMeshObjectPython", "Blocks", "Blocks", Blocks, "blocks",
+                       "ViewProviderBlocks")
+            cut.Analysis = curves
+            parts.append(cut)
         group.addObjects(parts)
         _fade_source(curves, source)
         _recompute(doc, parts)
@@ -133,12 +177,27 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
 def update_analysis(curves, size, report, digest, method=""):
     """Store a new run (from the task panel) on an existing analysis and recompute it."""
     doc = curves.Document
-    with _Transaction(doc, "FrameFix correction" if method else "FrameFix analysis"):
+    if curves.Blocks:
+        remember_block_mesh(digest, report)
+    with _Transaction(doc, _kind(method, curves.Blocks)):
         curves.Size, curves.Method = float(size or 0.0), method
         curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
         _fade_source(curves, curves.Source)
         _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])
     return curves
+
+
+def make_blocks(source, size=None, method="snap", report=None, digest=None, backend=None):
+    """make_analysis with blocks: correct (`method` snap, or none), cut into blocks; returns
+    the Blocks object (its Analysis is the curves object owning the run)."""
+    curves = make_analysis(source, size, report, digest, backend, method, blocks=True)
+    return blocks_of(curves)
+
+
+def blocks_of(curves):
+    """The Blocks object of a block run's curves object, or None."""
+    found = [o for o in curves.InList if type(getattr(o, "Proxy", None)).__name__ == "Blocks"]
+    return found[0] if found else None
 
 
 def analyses_of(source):

@@ -15,10 +15,19 @@ import tempfile
 from .backend import find_backend
 from .errors import BackendError
 from .report import load_report
+from .vtk import read_tets
 
 DEFAULT_TIMEOUT_S = 1800.0
-# Share of the whole run each backend stage takes, measured roughly on the samples.
+# Share of the whole run each backend stage takes, measured roughly on the samples, by
+# command (correct and blocks solve the field a second time in their "correct" stage).
 STAGE_WEIGHTS = (("load", 0.05), ("mesh", 0.25), ("field", 0.55), ("singularities", 0.15))
+COMMAND_STAGE_WEIGHTS = {
+    "analyze": STAGE_WEIGHTS,
+    "correct": (("load", 0.03), ("mesh", 0.15), ("field", 0.35), ("singularities", 0.07),
+                ("correct", 0.40)),
+    "blocks": (("load", 0.03), ("mesh", 0.14), ("field", 0.32), ("singularities", 0.06),
+               ("correct", 0.35), ("blocks", 0.10)),
+}
 MAX_LINE = 4096  # longer output lines are cut: a backend printing binary garbage stays cheap
 KEPT_LINES = 500  # the last output lines kept for error messages
 _PROGRESS = re.compile(r"^progress\s+(\w+)\s+([0-9.eE+-]+)\s*$")
@@ -37,10 +46,10 @@ def parse_progress(line):
     return m.group(1), min(max(fraction, 0.0), 1.0)
 
 
-def overall_fraction(stage, fraction):
-    """Fraction of the whole analysis done when `stage` is `fraction` done."""
+def overall_fraction(stage, fraction, weights=STAGE_WEIGHTS):
+    """Fraction of the whole run done when `stage` is `fraction` done."""
     done = 0.0
-    for name, weight in STAGE_WEIGHTS:
+    for name, weight in weights:
         if name == stage:
             return done + weight * fraction
         done += weight
@@ -55,13 +64,16 @@ def timeout_from_env(default=DEFAULT_TIMEOUT_S):
 
 
 METHODS = ("snap", "fillet", "extrude-curves", "extrude-nodes")  # `framefix correct --method`
+BLOCK_METHODS = ("snap", "none")  # `framefix blocks --method`: the correction before the cut
+BLOCKS_VTK = "blocks.vtk"  # the tets labelled by block, beside report.json
 
 
 class AnalysisJob:
     """`framefix analyze <tmp>/shape.brep [--size H] --out <tmp>/out` for one shape, or with
-    `method`, `framefix correct ... --method M` (analyze, correct, analyze again)."""
+    `method`, `framefix correct ... --method M` (analyze, correct, analyze again), or with
+    `blocks`, `framefix blocks ... --method snap|none` (and the block mesh in the report)."""
 
-    def __init__(self, shape, size=None, backend=None, timeout=None, method=None):
+    def __init__(self, shape, size=None, backend=None, timeout=None, method=None, blocks=False):
         self.backend = backend or find_backend()
         self.timeout = timeout_from_env() if timeout is None else float(timeout)
         self.workdir = tempfile.mkdtemp(prefix="framefix_")
@@ -69,7 +81,12 @@ class AnalysisJob:
         self.out_dir = os.path.join(self.workdir, "out")
         os.mkdir(self.out_dir)
         shape.exportBrep(self.brep_path)
-        command = "correct" if method else "analyze"
+        if blocks:
+            method = method or BLOCK_METHODS[0]
+            if method not in BLOCK_METHODS:
+                raise BackendError("blocks: unknown correction %r: use one of %s"
+                                   % (method, ", ".join(BLOCK_METHODS)))
+        self.command = command = "blocks" if blocks else "correct" if method else "analyze"
         self.argv = self.backend.argv + [command, self.brep_path, "--out", self.out_dir]
         if size:
             self.argv += ["--size", repr(float(size))]
@@ -88,6 +105,10 @@ class AnalysisJob:
             self.error_line = (m.group(1) or "", m.group(2))
         return parse_progress(line)
 
+    def overall_fraction(self, stage, fraction):
+        """Fraction of this run done when `stage` is `fraction` done (None: unknown stage)."""
+        return overall_fraction(stage, fraction, COMMAND_STAGE_WEIGHTS[self.command])
+
     def _tail(self, n=5):
         tail = [l for l in self.lines if l.strip() and not parse_progress(l)][-n:]
         return ("; last output: " + " | ".join(tail)[:400]) if tail else ""
@@ -105,7 +126,17 @@ class AnalysisJob:
                 exit_code, "failed with exit code %s" % exit_code)
             where = " in stage %s" % stage if stage else ""
             raise BackendError("the backend %s%s: %s" % (what, where, message), stage)
-        return load_report(os.path.join(self.out_dir, "report.json"))
+        report = load_report(os.path.join(self.out_dir, "report.json"))
+        if self.command == "blocks":
+            if report["blocks"] is None:
+                raise BackendError("the backend's report.json has no blocks section")
+            mesh = read_tets(os.path.join(self.out_dir, BLOCKS_VTK), ("block", "block_valid"))
+            if len(mesh["tets"]) and (mesh["block"].min() < -1
+                                      or mesh["block"].max() >= report["blocks"]["count"]):
+                raise BackendError("the backend's %s names blocks its report does not have"
+                                   % BLOCKS_VTK)
+            report["block_mesh"] = mesh
+        return report
 
     def timeout_error(self):
         return BackendError("the backend did not finish within %.0f s and was stopped%s"

@@ -74,6 +74,7 @@ def check_report(data):
     mesh = data.get("mesh") if isinstance(data.get("mesh"), dict) else {}
     return {"summary": summary, "curves": curves, "nodes": nodes, "feature_curves": features,
             "mesh": mesh, "correction": _correction(data.get("correction")),
+            "blocks": _blocks(data.get("blocks")),
             "timings_s": data.get("timings_s") or {}, "raw": data}
 
 
@@ -90,6 +91,51 @@ def _correction(c):
              for i, p in enumerate(c.get("snapped_paths") or [])]
     return {"method": str(c.get("method", "")), "before": dict(c["before"]),
             "changed_curves": int(c.get("changed_curves", 0)), "snapped_paths": paths}
+
+
+BLOCK_COUNTS = ("count", "valid", "conforming_pairs", "pairs", "flat_corners", "flat_edges")
+
+
+def _blocks(b):
+    """The `blocks` section of `framefix blocks` (None for the other commands)."""
+    if b is None:
+        return None
+    if not isinstance(b, dict):
+        _fail("blocks is not an object")
+    out = {}
+    for key in BLOCK_COUNTS:
+        if not isinstance(b.get(key), int) or b[key] < 0:
+            _fail("blocks.%s is not a count" % key)
+        out[key] = b[key]
+    items = b.get("blocks") or []
+    if not isinstance(items, list) or len(items) != out["count"]:
+        _fail("blocks.blocks does not hold blocks.count = %d blocks" % out["count"])
+    out["blocks"] = []
+    for i, item in enumerate(items):
+        if not isinstance(item, dict):
+            _fail("blocks.blocks[%d] is not an object" % i)
+        out["blocks"].append({"id": int(item.get("id", i)), "tets": int(item.get("tets", 0)),
+                              "valid": bool(item.get("valid")),
+                              "reason": str(item.get("reason") or "")})
+    return out
+
+
+def plural(n, word):
+    return "%d %s%s" % (n, word, "" if n == 1 else "s")
+
+
+def blocks_text(b):
+    """'7 blocks, all valid, 1 flat edge' or '7 blocks, 6 valid, 9/10 pairs conforming,
+    1 flat edge': what a CAD engineer asks first about a block decomposition."""
+    parts = [plural(b["count"], "block")]
+    parts.append("all valid" if b["valid"] == b["count"] else "%d valid" % b["valid"])
+    if b["conforming_pairs"] != b["pairs"]:
+        parts.append("%d/%d pairs conforming" % (b["conforming_pairs"], b["pairs"]))
+    if b["flat_edges"]:
+        parts.append(plural(b["flat_edges"], "flat edge"))
+    if b["flat_corners"]:
+        parts.append(plural(b["flat_corners"], "flat corner"))
+    return ", ".join(parts)
 
 
 def load_report(path):
@@ -123,4 +169,13 @@ def summary_text(summary, mesh=None):
         summary["invalid_nodes"], verdict))
     if mesh and mesh.get("tets"):
         text += "; mesh %s tets, size %.4g" % (mesh.get("tets"), float(mesh.get("size", 0)))
+    return text
+
+
+def run_text(report):
+    """The console line of a checked report: the blocks first when there are some."""
+    text = summary_text(report["summary"], report["mesh"])
+    if report.get("blocks") is not None:
+        text = "%s; curves after the correction: %s" % (blocks_text(report["blocks"]), text) \
+            if report["correction"] else "%s; %s" % (blocks_text(report["blocks"]), text)
     return text

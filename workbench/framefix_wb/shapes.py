@@ -32,10 +32,27 @@ def solid_of(obj):
     return solids[0].copy()
 
 
+def analysed_part(obj):
+    """The part a FrameFix result object (curves, nodes, blocks, their group) was computed
+    from, so commands work on an existing analysis too; other objects are returned as is."""
+    analysis = getattr(obj, "Analysis", None) if hasattr(obj, "Proxy") else None
+    if analysis is not None and getattr(analysis, "Source", None) is not None:
+        return analysis.Source
+    if hasattr(obj, "Proxy") and getattr(obj, "Source", None) is not None and hasattr(
+            obj, "InputDigest"):
+        return obj.Source
+    if obj is not None and obj.isDerivedFrom("App::DocumentObjectGroup"):
+        parts = {analysed_part(o) for o in obj.Group} - set(obj.Group)
+        if len(parts) == 1:
+            return parts.pop()
+    return obj
+
+
 def source_from_selection(selected):
-    """The one selected document object, given Gui.Selection.getSelection()'s list."""
+    """The one selected document object, given Gui.Selection.getSelection()'s list; a
+    FrameFix result stands for the part it was computed from."""
     objects = []
-    for obj in selected:
+    for obj in map(analysed_part, selected):
         if obj not in objects:
             objects.append(obj)
     if len(objects) != 1:

@@ -38,3 +38,30 @@ def legend_html(table, codes_present=None):
             hexcol = "#%02x%02x%02x" % tuple(int(255 * c) for c in rgb)
             rows.append('<span style="color:%s">&#9632;</span> %s' % (hexcol, text))
     return "&nbsp;&nbsp;".join(rows)
+
+
+# Blocks: one colour per block (hues around the wheel, skipping red), invalid ones red.
+INVALID_BLOCK_COLOR = (0.90, 0.10, 0.10)
+BLOCKS_TRANSPARENCY = 30
+_BLOCK_HUES = (0.58, 0.12, 0.33, 0.80, 0.48, 0.17, 0.68, 0.27, 0.90, 0.40, 0.07, 0.53)
+
+
+def block_color(block, valid):
+    """The colour of block `block` (-1: no block), red if not `valid`."""
+    import colorsys
+    if not valid:
+        return INVALID_BLOCK_COLOR
+    hue = _BLOCK_HUES[block % len(_BLOCK_HUES)]
+    light = (0.62, 0.50, 0.72)[(block // len(_BLOCK_HUES)) % 3]
+    return colorsys.hls_to_rgb(hue, light, 0.65)
+
+
+def blocks_legend_html(count, valid_flags):
+    """The blocks' colour swatches, invalid ones named."""
+    rows = []
+    for b in range(count):
+        rgb = block_color(b, valid_flags[b])
+        hexcol = "#%02x%02x%02x" % tuple(int(255 * c) for c in rgb)
+        rows.append('<span style="color:%s">&#9632;</span> %d%s'
+                    % (hexcol, b, "" if valid_flags[b] else " (invalid)"))
+    return "&nbsp;".join(rows)

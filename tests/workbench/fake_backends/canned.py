@@ -3,6 +3,7 @@
 
 NOT an oracle: its curves are made up. FAKE_BACKEND_LOG (if set) gets one line per run, so
 tests can count reruns; FAKE_BACKEND_DELAY slows the progress lines down (seconds each).
+`blocks` cuts the unit cube's 6 Kuhn tets into 2 made-up blocks (block 1 invalid).
 """
 import json
 import os
@@ -10,9 +11,36 @@ import sys
 import time
 
 
+# the unit cube's corners (bit 0: x, 1: y, 2: z) and its 6 Kuhn tets around the diagonal 0-7
+CUBE = [[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)]
+KUHN = [[0, 1, 3, 7], [0, 3, 2, 7], [0, 2, 6, 7], [0, 6, 4, 7], [0, 4, 5, 7], [0, 5, 1, 7]]
+
+
+def write_blocks(report, out):
+    """Report section and blocks.vtk: tets 0-2 block 0 (valid), 3-5 block 1 (invalid)."""
+    tet_block, valid = [0, 0, 0, 1, 1, 1], [1, 0]
+    report["blocks"] = {
+        "count": 2, "valid": 1, "conforming_pairs": 0, "pairs": 1, "flat_corners": 0,
+        "flat_edges": 1, "seconds": {"total": 0.01}, "neighbour_pairs": [
+            {"blocks": [0, 1], "conforming": False, "reason": "made up"}],
+        "blocks": [{"id": b, "tets": 3, "volume": 0.5, "valid": bool(valid[b]), "faces": 6,
+                    "edges": 12, "corners": 8, "flat_edges": b, "flat_corners": 0,
+                    "neighbours": [1 - b], "centroid": [0.5, 0.5, 0.5],
+                    "reason": "" if valid[b] else "made up"} for b in range(2)]}
+    lines = ["# vtk DataFile Version 3.0", "canned blocks", "ASCII", "DATASET UNSTRUCTURED_GRID",
+             "POINTS 8 double"] + ["%d %d %d" % tuple(p) for p in CUBE]
+    lines += ["CELLS 6 30"] + ["4 %d %d %d %d" % tuple(t) for t in KUHN]
+    lines += ["CELL_TYPES 6"] + ["10"] * 6 + ["CELL_DATA 6", "SCALARS block double 1",
+                                              "LOOKUP_TABLE default"] + [str(b) for b in tet_block]
+    lines += ["SCALARS block_valid double 1", "LOOKUP_TABLE default"]
+    lines += [str(valid[b]) for b in tet_block]
+    with open(os.path.join(out, "blocks.vtk"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 def main(argv):
-    if len(argv) < 4 or argv[0] not in ("analyze", "correct") or "--out" not in argv:
-        print("framefix: error [cli]: usage: framefix analyze|correct PART [--size H] "
+    if len(argv) < 4 or argv[0] not in ("analyze", "correct", "blocks") or "--out" not in argv:
+        print("framefix: error [cli]: usage: framefix analyze|correct|blocks PART [--size H] "
               "[--method M] --out DIR", file=sys.stderr)
         return 2
     part, out = argv[1], argv[argv.index("--out") + 1]
@@ -24,7 +52,12 @@ def main(argv):
         with open(os.environ["FAKE_BACKEND_LOG"], "a") as f:
             f.write("%s %s size=%r\n" % (argv[0], os.path.basename(part), size))
     delay = float(os.environ.get("FAKE_BACKEND_DELAY", "0.02"))
-    for stage in ("load", "mesh", "field", "singularities"):
+    stages = ["load", "mesh", "field", "singularities"]
+    method = argv[argv.index("--method") + 1] if "--method" in argv else (
+        "snap" if argv[0] != "analyze" else "")
+    if argv[0] == "blocks":
+        stages += ["correct", "blocks"] if method != "none" else ["blocks"]
+    for stage in stages:
         for fraction in (0.0, 0.5, 1.0):
             print("progress %s %.2f" % (stage, fraction), file=sys.stderr, flush=True)
             time.sleep(delay)
@@ -52,14 +85,17 @@ def main(argv):
               "singularities": {"curves": curves, "nodes": nodes, "summary": summary},
               "timings_s": {"total": 0.1}, "peak_memory_mb": 1.0}
     os.makedirs(out, exist_ok=True)
-    if argv[0] == "correct":  # the 3-5 curve is gone after the correction
-        report["correction"] = {"method": argv[argv.index("--method") + 1],
+    if argv[0] == "correct" or (argv[0] == "blocks" and method != "none"):
+        # the 3-5 curve is gone after the correction
+        report["correction"] = {"method": method,
                                 "before": dict(summary), "changed_curves": 1,
                                 "snapped_paths": [{"source_curve": 2, "points": [
                                     [0.5, 0.0, 0.1], [0.5, 0.0, 0.9]]}]}
         report["singularities"]["curves"] = curves[:2]
         report["singularities"]["summary"] = dict(summary, curves=2, curves_3_5=0,
                                                   invalid_nodes=0, meshable=True)
+    if argv[0] == "blocks":
+        write_blocks(report, out)
     with open(os.path.join(out, "report.json"), "w") as f:
         json.dump(report, f)
     return 0

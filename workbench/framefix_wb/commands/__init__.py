@@ -5,8 +5,10 @@ def register_commands():
     """Register the FrameFix commands with FreeCAD; returns their names, in toolbar order."""
     import FreeCADGui
     from .analyze import AnalyzeCommand
+    from .blocks import BlocksCommand
     from .correct import CorrectCommand
-    commands = [("FrameFix_Analyze", AnalyzeCommand()), ("FrameFix_Correct", CorrectCommand())]
+    commands = [("FrameFix_Analyze", AnalyzeCommand()), ("FrameFix_Correct", CorrectCommand()),
+                ("FrameFix_Blocks", BlocksCommand())]
     for name, command in commands:
         FreeCADGui.addCommand(name, command)
     return [name for name, _ in commands]

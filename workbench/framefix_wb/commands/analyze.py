@@ -9,6 +9,7 @@ from ..shapes import source_from_selection
 
 class AnalyzeCommand:
     METHOD = None  # a correction method: the Correct command
+    BLOCKS = False  # `framefix blocks`: the Blocks command
 
     def GetResources(self):
         return {"Pixmap": paths.icon("FrameFix_Analyze"),
@@ -27,4 +28,5 @@ class AnalyzeCommand:
         except SelectionError as e:
             message = str(e)
             FreeCAD.Console.PrintWarning("FrameFix: %s\n" % message)
-        FreeCADGui.Control.showDialog(AnalyzePanel(source, message=message, method=self.METHOD))
+        FreeCADGui.Control.showDialog(AnalyzePanel(source, message=message, method=self.METHOD,
+                                                   blocks=self.BLOCKS))

@@ -11,8 +11,8 @@ import FreeCAD
 
 from .. import geometry, shapes, sizing, style
 from ..errors import FrameFixError
-from ..job import METHODS
-from ..report import summary_text
+from ..job import BLOCK_METHODS, METHODS
+from ..report import run_text
 from .properties import HIDDEN, READ_ONLY, ProxyBase, add, report_of
 
 SUMMARY_PROPERTIES = (
@@ -34,6 +34,9 @@ class SingularCurves(ProxyBase):
             % sizing.TARGET_TETS)
         add(obj, "App::PropertyString", "Method", "FrameFix",
             "Correction method (%s); empty: an analysis" % ", ".join(METHODS))
+        add(obj, "App::PropertyBool", "Blocks", "FrameFix",
+            "The run also cuts the part into blocks (framefix blocks); Method: %s"
+            % " or ".join(BLOCK_METHODS), READ_ONLY)
         add(obj, "App::PropertyInteger", "Before35", "Summary",
             "3-5 curves before the correction", READ_ONLY)
         self.show_method(obj)
@@ -61,25 +64,27 @@ class SingularCurves(ProxyBase):
         for name in ("Method", "Before35"):
             obj.setEditorMode(name, (READ_ONLY if name == "Before35" else 0) if obj.Method
                               else HIDDEN)
+        obj.setEditorMode("Blocks", READ_ONLY if obj.Blocks else HIDDEN)
 
     def onChanged(self, obj, prop):
-        if prop == "Method" and "Before35" in obj.PropertiesList:
+        if prop in ("Method", "Blocks") and "Before35" in obj.PropertiesList:
             self.show_method(obj)
 
     def execute(self, obj):
         from ..analysis import input_digest, run_analysis
         solid = shapes.solid_of(obj.Source)
         size = obj.Size.Value or None  # 0: the backend's default
-        if obj.Method and obj.Method not in METHODS:
+        methods = BLOCK_METHODS if obj.Blocks else METHODS
+        if (obj.Method or obj.Blocks) and obj.Method not in methods:
             raise FrameFixError("unknown correction method %r: use one of %s"
-                                % (obj.Method, ", ".join(METHODS)))
-        digest = input_digest(solid, size, obj.Method)
+                                % (obj.Method, ", ".join(methods)))
+        digest = input_digest(solid, size, obj.Method, obj.Blocks)
         if digest != obj.InputDigest or not obj.Report:
-            report = run_analysis(solid, size, method=obj.Method or None)
+            report = run_analysis(solid, size, method=obj.Method or None, blocks=obj.Blocks)
             obj.Report = json.dumps(report["raw"])
             obj.InputDigest = digest
             FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (
-                obj.Source.Label, summary_text(report["summary"], report["mesh"])))
+                obj.Source.Label, run_text(report)))
         report = report_of(obj)
         shape, codes, owners = geometry.polylines(
             report["curves"], lambda c: style.CURVE_KIND_CODES.get(c["kind"], style.OTHER_KIND))

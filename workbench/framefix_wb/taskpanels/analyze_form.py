@@ -6,18 +6,19 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
-from ..job import METHODS
-from ..report import curve_breakdown
+from ..job import BLOCK_METHODS, METHODS
+from ..report import blocks_text, curve_breakdown
 
 
 class AnalyzeForm(QtWidgets.QWidget):
-    """`method` given: the Correct panel, with a method choice."""
+    """`method` given: the Correct panel, with a method choice; `blocks`: the Blocks panel
+    (method snap or none)."""
 
-    def __init__(self, method=None):
+    def __init__(self, method=None, blocks=False):
         super().__init__()
-        self.setWindowTitle("FrameFix Correct" if method else "FrameFix Analyze")
-        self.setWindowIcon(QtGui.QIcon(paths.icon(
-            "FrameFix_Correct" if method else "FrameFix_Analyze")))
+        name = "Blocks" if blocks else "Correct" if method else "Analyze"
+        self.setWindowTitle("FrameFix " + name)
+        self.setWindowIcon(QtGui.QIcon(paths.icon("FrameFix_" + name)))
         layout = QtWidgets.QVBoxLayout(self)
         self.part_label = QtWidgets.QLabel()
         self.part_label.setWordWrap(True)
@@ -40,10 +41,13 @@ class AnalyzeForm(QtWidgets.QWidget):
         if method:
             grid.addWidget(QtWidgets.QLabel("Method"), 2, 0)
             self.method = QtWidgets.QComboBox()
-            self.method.addItems(list(METHODS))
+            self.method.addItems(list(BLOCK_METHODS if blocks else METHODS))
             self.method.setCurrentText(method)
-            self.method.setToolTip("snap: move 3-5 curves onto the boundary (the paper's first "
-                                   "approach); the others change the geometry or the mesh")
+            self.method.setToolTip(
+                "Correction before cutting: snap moves 3-5 curves onto the boundary; none cuts "
+                "the field as it is" if blocks else
+                "snap: move 3-5 curves onto the boundary (the paper's first approach); the "
+                "others change the geometry or the mesh")
             grid.addWidget(self.method, 2, 1, 1, 2)
         layout.addLayout(grid)
         self.bar = QtWidgets.QProgressBar()
@@ -104,7 +108,15 @@ class AnalyzeForm(QtWidgets.QWidget):
         before = ("after %s (%d before): " % (correction["method"],
                                              correction["before"]["curves_3_5"])
                   if correction else "")
-        self.summary.setText(
+        blocks = report.get("blocks")
+        head = ""
+        if blocks is not None:
+            good = blocks["valid"] == blocks["count"] and (
+                blocks["conforming_pairs"] == blocks["pairs"])
+            head = '<b style="color:%s">%s</b><br>%s<br>' % (
+                "#008000" if good else "#c00000", html.escape(blocks_text(blocks)),
+                style.blocks_legend_html(blocks["count"], [b["valid"] for b in blocks["blocks"]]))
+        self.summary.setText(head +
             "%s: %s<b>%d 3-5 curves</b>, %d singular curves in all (%s), %d nodes (%d invalid)"
             "<br>%s<br>%s" % (
                 verdict, before, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],

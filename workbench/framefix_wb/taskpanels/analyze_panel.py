@@ -13,7 +13,7 @@ from PySide2 import QtCore, QtWidgets
 from .. import analysis, shapes, sizing
 from ..errors import FrameFixError
 from ..job import AnalysisJob
-from ..report import summary_text
+from ..report import run_text
 from .analyze_form import AnalyzeForm
 from .process_runner import ProcessRunner
 
@@ -31,7 +31,7 @@ class AnalyzePanel:
 
     active = None  # the open panel, for macros and GUI tests
 
-    def __init__(self, source=None, analysis_obj=None, message="", method=None):
+    def __init__(self, source=None, analysis_obj=None, message="", method=None, blocks=False):
         AnalyzePanel.active = self
         self.source = source
         self.fixed_source = source is not None
@@ -47,7 +47,10 @@ class AnalyzePanel:
         self.started = 0.0
         if analysis_obj is not None and analysis_obj.Method:
             method = analysis_obj.Method
-        self.form = f = AnalyzeForm(method)
+        if analysis_obj is not None:
+            blocks = bool(getattr(analysis_obj, "Blocks", False))
+        self.blocks = blocks  # the Blocks panel: `framefix blocks`, method snap or none
+        self.form = f = AnalyzeForm(method or ("snap" if blocks else None), blocks)
         f.size.valueChanged.connect(self._update_estimate)
         f.auto.toggled.connect(self._reset_size)
         self.runner.lines.connect(f.queue_output)
@@ -126,8 +129,9 @@ class AnalyzePanel:
                 self._set_source(shapes.source_from_selection(FreeCADGui.Selection.getSelection()))
             solid = shapes.solid_of(self.source)
             self.size_run, self.method_run = self.chosen_size(), self.chosen_method()
-            self.digest = analysis.input_digest(solid, self.size_run, self.method_run)
-            self.job = AnalysisJob(solid, self.size_run, method=self.method_run or None)
+            self.digest = analysis.input_digest(solid, self.size_run, self.method_run, self.blocks)
+            self.job = AnalysisJob(solid, self.size_run, method=self.method_run or None,
+                                   blocks=self.blocks)
         except (FrameFixError, ReferenceError, RuntimeError, OSError) as e:
             self._show_error(str(e))
             return False
@@ -152,12 +156,13 @@ class AnalyzePanel:
                                          self.method_run)
             else:
                 self.analysis = analysis.make_analysis(self.source, self.size_run, report,
-                                                       self.digest, method=self.method_run)
+                                                       self.digest, method=self.method_run,
+                                                       blocks=self.blocks)
         except Exception as e:  # the adapter boundary: whatever went wrong goes to the panel
             self._show_error("could not add the results: %s" % e)
             return
         self.last = (self.source.Name, self.size_run, self.method_run)
-        text = summary_text(report["summary"], report["mesh"])
+        text = run_text(report)
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (self.source.Label, text))
         self._log(text)
         self.form.show_report(report)

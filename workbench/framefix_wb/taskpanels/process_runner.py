@@ -15,7 +15,7 @@ import signal
 from PySide2 import QtCore
 
 from ..errors import BackendError
-from ..job import MAX_LINE, overall_fraction
+from ..job import MAX_LINE
 
 SETSID = "/usr/bin/setsid"
 
@@ -99,7 +99,7 @@ class ProcessRunner(QtCore.QObject):
             last = self.job.add_line(text) or last
         # a flood shows its end, long lines their start: the log must stay cheap to lay out
         self.lines.emit("\n".join(t[:300] for t in texts[-200:]))
-        fraction = overall_fraction(*last) if last else None
+        fraction = self.job.overall_fraction(*last) if last else None
         if fraction is not None:
             self.progress.emit(last[0], fraction)
 

@@ -1,0 +1,88 @@
+"""GUI with the real backend: select the notch, FrameFix_Blocks, Apply, wait; the Blocks object
+holds every tet of the run, coloured by block, as many blocks as the report; the corrected
+curves and snapped paths are shown with it. Screenshot of the whole window in
+output/gui_blocks/, copied to docs/screenshot_blocks.png."""
+import os
+import shutil
+
+import FreeCAD
+import FreeCADGui
+import Part
+from PySide2 import QtWidgets
+
+import ffgui_harness
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(ffgui_harness.__file__))))
+SAMPLES = os.environ.get("FRAMEFIX_SAMPLES") or os.path.join(REPO, "samples")
+DOCS_SHOT = os.path.join(REPO, "docs", "screenshot_blocks.png")
+
+
+def scenario(h):
+    from framefix_wb import analysis
+    from framefix_wb.objects.properties import report_of
+    from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
+    FreeCADGui.activateWorkbench("FrameFixWorkbench")
+    doc = FreeCAD.newDocument("Notch")
+    part = doc.addObject("Part::Feature", "Notch")
+    part.Shape = Part.read(os.path.join(SAMPLES, "notch.step"))
+    doc.recompute()
+    h.show_all()
+    h.clear_report_view()
+    yield 0.5
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Blocks")
+    yield 0.5
+    panel = AnalyzePanel.active
+    h.check(panel is not None and panel.blocks and panel.form.windowTitle() == "FrameFix Blocks",
+            "the Blocks panel is open")
+    h.button(QtWidgets.QDialogButtonBox.Apply).click()
+    yield 1.0
+    h.check(panel.runner.is_running(), "the backend runs while the GUI stays responsive")
+    yield h.until(lambda: not panel.runner.is_running(), 600, "the backend to finish")
+    yield 0.5
+    curves = panel.analysis
+    blocks = analysis.blocks_of(curves) if curves is not None else None
+    h.check(blocks is not None and blocks.isValid(), "Blocks object exists: %s"
+            % panel.form.summary.text())
+    if blocks is None:
+        return
+    report = report_of(curves)
+    count = report["blocks"]["count"]
+    h.check(blocks.Count >= 1 and blocks.Count == count,
+            "block count %d equals the report's %d" % (blocks.Count, count))
+    tets = blocks.FemMesh.VolumeCount
+    h.check(tets > 0 and len(blocks.BlockIds) == tets == int(report["mesh"]["tets"]),
+            "one block id per tet: %d ids, %d volumes, %s tets in the report"
+            % (len(blocks.BlockIds), tets, report["mesh"]["tets"]))
+    coloured = blocks.ViewObject.Proxy.coloured
+    h.check(coloured == tets, "every tet coloured: %d colours" % coloured)
+    h.check(blocks.Summary in panel.form.summary.text(), "summary in the panel: " + blocks.Summary)
+    h.check(curves.Curves35 == 0, "the corrected curves have no 3-5 curve")
+    paths = [o for o in curves.InList if type(getattr(o, "Proxy", None)).__name__ == "SnappedPaths"]
+    h.check(len(paths) == 1 and len(paths[0].Shape.Edges) > 0, "snapped paths shown")
+    h.button(QtWidgets.QDialogButtonBox.Ok).click()
+    yield h.until(lambda: AnalyzePanel.active is None, 10, "OK to close the panel")
+    FreeCADGui.Selection.clearSelection()
+    part.ViewObject.Visibility = False  # the blocks cover the part: its faces would z-fight
+    h.expand_tree()
+    h.show_all()
+    view = FreeCADGui.ActiveDocument.ActiveView  # isometric from the pocket's side
+    view.setCameraOrientation(FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 180).multiply(
+        view.getCameraOrientation()))
+    FreeCADGui.SendMsgToActiveView("ViewFit")
+    yield 1.0
+    shot = h.screenshot("blocks_notch")
+    shutil.copyfile(shot, DOCS_SHOT)
+    h.check(os.path.getsize(DOCS_SHOT) > 10000, "screenshot copied to " + DOCS_SHOT)
+
+    # The same part again from the existing analysis: the command takes its part.
+    FreeCADGui.Selection.addSelection(curves)
+    FreeCADGui.runCommand("FrameFix_Blocks")
+    yield 0.5
+    panel = AnalyzePanel.active
+    h.check(panel is not None and panel.source is part, "Blocks on an analysis uses its part")
+    FreeCADGui.Control.closeDialog()
+    yield 0.3
+
+
+ffgui_harness.run(scenario, watchdog_s=800)

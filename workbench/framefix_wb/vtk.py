@@ -1,0 +1,69 @@
+"""Reading the backend's legacy ASCII VTK tet meshes (blocks.vtk): checked plain data.
+
+Like report.json, the file comes from a child process that may have died half-way: counts,
+cell types, indices and cell data are checked once here; a bad file is a BackendError.
+"""
+import re
+
+import numpy
+
+from .errors import BackendError
+
+VTK_TETRA = 10
+
+
+def _fail(path, what):
+    raise BackendError("the backend's %s is unusable: %s" % (path.rsplit("/", 1)[-1], what))
+
+
+def _numbers(text, start, count, dtype):
+    """`count` numbers of `text` from offset `start` (numpy parses, Python does not loop)."""
+    values = numpy.array(text[start:].split(None, count)[:count], dtype=dtype)
+    if len(values) != count:
+        raise ValueError("truncated")
+    return values
+
+
+def _header(text, pattern, start=0):
+    m = re.compile(pattern, re.M).search(text, start)
+    if not m:
+        raise ValueError("no %s" % pattern)
+    return m
+
+
+def read_tets(path, arrays=("block",)):
+    """{"points": (n, 3) float array, "tets": (m, 4) int array, "<array>": m ints} of a legacy
+    ASCII UNSTRUCTURED_GRID of tets with integer CELL_DATA `arrays`."""
+    try:
+        with open(path, encoding="ascii") as f:
+            text = f.read()
+    except FileNotFoundError:
+        raise BackendError("the backend finished but wrote no %s" % path.rsplit("/", 1)[-1]) from None
+    except (OSError, UnicodeDecodeError) as e:
+        _fail(path, str(e))
+    try:
+        m = _header(text, r"^POINTS (\d+) \w+\s")
+        n = int(m.group(1))
+        points = _numbers(text, m.end(), 3 * n, float).reshape(n, 3)
+        m = _header(text, r"^CELLS (\d+) (\d+)\s", m.end())
+        cells, total = int(m.group(1)), int(m.group(2))
+        if total != 5 * cells:
+            _fail(path, "cells are not all tets")
+        ints = _numbers(text, m.end(), total, numpy.int64).reshape(cells, 5)
+        if cells and (ints[:, 0] != 4).any():
+            _fail(path, "cells are not all tets")
+        m = _header(text, r"^CELL_TYPES (\d+)\s", m.end())
+        if cells and (_numbers(text, m.end(), cells, numpy.int64) != VTK_TETRA).any():
+            _fail(path, "cell types are not all tets")
+        data = {}
+        for name in arrays:
+            a = _header(text, r"^SCALARS %s \w+ 1\s+LOOKUP_TABLE \w+\s" % re.escape(name), m.end())
+            data[name] = _numbers(text, a.end(), cells, float).astype(numpy.int64)
+    except ValueError as e:
+        _fail(path, "truncated or not a legacy VTK tet mesh (%s)" % e)
+    tets = ints[:, 1:]
+    if cells and (tets.min() < 0 or tets.max() >= n):
+        _fail(path, "a tet names a point that does not exist")
+    if not numpy.isfinite(points).all():
+        _fail(path, "a point is not finite")
+    return dict(data, points=points, tets=tets)
