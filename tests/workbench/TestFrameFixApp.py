@@ -106,3 +106,28 @@ class MovedPart(unittest.TestCase):
             self.assertGreater(curves.Shape.BoundBox.XMin, 9.0)
         finally:
             FreeCAD.closeDocument(doc.Name)
+
+
+class Blocks(unittest.TestCase):
+    """framefix blocks (snap) on the notch through the workbench's objects."""
+
+    def test_notch_blocks_every_tet_in_a_block(self):
+        from framefix_wb.objects.properties import report_of
+        doc = FreeCAD.newDocument("FrameFixBlocks")
+        try:
+            part = doc.addObject("Part::Feature", "Notch")
+            part.Shape = Part.read(NOTCH)
+            doc.recompute()
+            blocks = analysis.make_blocks(part)
+            report = report_of(blocks.Analysis)
+            self.assertTrue(blocks.isValid())
+            self.assertGreaterEqual(blocks.Count, 1)
+            self.assertEqual(blocks.Count, report["blocks"]["count"])
+            tets = blocks.FemMesh.VolumeCount
+            self.assertEqual(tets, int(report["mesh"]["tets"]))
+            self.assertEqual(len(blocks.BlockIds), tets)
+            self.assertTrue(all(0 <= b < blocks.Count for b in blocks.BlockIds))
+            self.assertEqual(blocks.Analysis.Curves35, 0)
+            self.assertGreater(len(doc.getObject("SnappedPaths").Shape.Edges), 0)
+        finally:
+            FreeCAD.closeDocument(doc.Name)

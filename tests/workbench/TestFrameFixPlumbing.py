@@ -290,3 +290,118 @@ class Objects(unittest.TestCase):
         self.doc.recompute()
         self.assertFalse(curves.isValid())
         self.assertTrue(self.box.isValid())
+
+
+class BlocksPlumbing(unittest.TestCase):
+    """FrameFix_Blocks' path (`framefix blocks`) with the fake backends; the canned blocks
+    (2 blocks of 3 tets each, block 1 invalid) are made up."""
+
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("FrameFixBlocks")
+        self.doc.UndoMode = 1
+        self.box = self.doc.addObject("Part::Box", "Box")
+        self.doc.recompute()
+        use_backend("canned.py")
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def test_blocks_summary_texts(self):
+        b = dict(count=7, valid=7, conforming_pairs=10, pairs=10, flat_corners=0, flat_edges=1)
+        self.assertEqual(report.blocks_text(b), "7 blocks, all valid, 1 flat edge")
+        b.update(valid=6, conforming_pairs=9)
+        self.assertEqual(report.blocks_text(b), "7 blocks, 6 valid, 9/10 pairs conforming, 1 flat edge")
+
+    def test_blocks_job_command_line_and_progress(self):
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, blocks=True)
+        try:
+            self.assertEqual(j.argv[-2:], ["--method", "snap"])
+            self.assertIn("blocks", j.argv)
+            self.assertAlmostEqual(j.overall_fraction("blocks", 1.0), 1.0)
+            self.assertLess(j.overall_fraction("correct", 0.0), 1.0)
+        finally:
+            j.cleanup()
+
+    def test_blocks_objects_every_tet_has_a_block(self):
+        blocks = analysis.make_blocks(self.box, 0.5)
+        self.assertTrue(blocks.isValid())
+        self.assertEqual((blocks.Count, blocks.Valid), (2, 1))
+        self.assertEqual(blocks.FemMesh.VolumeCount, 6)
+        self.assertEqual(list(blocks.BlockIds), [0, 0, 0, 1, 1, 1])
+        self.assertEqual(list(blocks.BlockValid), [1, 0])
+        self.assertEqual(blocks.Summary, "2 blocks, 1 valid, 0/1 pairs conforming, 1 flat edge")
+        group = blocks.getParentGroup()
+        self.assertEqual(group.Label, "FrameFix blocks (snap) of Box")
+        names = sorted(type(o.Proxy).__name__ for o in group.Group)
+        self.assertEqual(names, ["Blocks", "FeatureCurves", "SingularCurves", "SingularNodes",
+                                 "SnappedPaths"])
+        self.assertEqual(blocks.Analysis.Curves35, 0)
+
+    def test_blocks_without_correction_have_no_snapped_paths(self):
+        blocks = analysis.make_blocks(self.box, 0.5, method="none")
+        self.assertEqual(blocks.Analysis.Curves35, 1)
+        self.assertIsNone(self.doc.getObject("SnappedPaths"))
+
+    def test_changing_the_size_reruns_and_rebuilds_the_mesh(self):
+        blocks = analysis.make_blocks(self.box, 0.5)
+        curves = blocks.Analysis
+        curves.Size = 0.25
+        self.doc.recompute()
+        self.assertTrue(blocks.isValid())
+        self.assertEqual(blocks.MeshDigest, curves.InputDigest)
+
+    def test_undo_removes_the_blocks_and_redo_restores_them(self):
+        names = sorted(o.Name for o in self.doc.Objects)
+        analysis.make_blocks(self.box, 0.5)
+        self.doc.undo()
+        self.assertEqual(sorted(o.Name for o in self.doc.Objects), names)
+        self.doc.redo()
+        self.assertEqual(self.doc.getObject("Blocks").FemMesh.VolumeCount, 6)
+
+    def test_saved_document_keeps_the_block_mesh(self):
+        analysis.make_blocks(self.box, 0.5)
+        path = os.path.join(tempfile.mkdtemp(), "blocks.FCStd")
+        self.doc.saveAs(path)
+        FreeCAD.closeDocument(self.doc.Name)
+        analysis._BLOCK_MESHES.clear()
+        self.doc = FreeCAD.openDocument(path)
+        blocks = self.doc.getObject("Blocks")
+        blocks.touch()
+        self.doc.recompute()
+        self.assertTrue(blocks.isValid())
+        self.assertEqual(blocks.FemMesh.VolumeCount, 6)
+
+    def test_failing_backends_through_blocks_leave_the_document_unchanged(self):
+        names = sorted(o.Name for o in self.doc.Objects)
+        digest = shapes.shape_digest(self.box.Shape)
+        for fake, message in (("segv.sh", "crashed.*SIGSEGV"), ("garbage.sh", "not valid JSON"),
+                              ("reject.sh", "rejected the input"),
+                              ("flood.sh", "wrote no report.json")):
+            use_backend(fake)
+            with self.assertRaisesRegex(BackendError, message):
+                analysis.make_blocks(self.box, 0.5)
+        os.environ["FRAMEFIX_TIMEOUT"] = "2"
+        try:
+            use_backend("hang.sh")
+            with self.assertRaisesRegex(BackendError, "did not finish within 2 s"):
+                analysis.make_blocks(self.box, 0.5)
+        finally:
+            os.environ.pop("FRAMEFIX_TIMEOUT")
+        self.assertEqual(sorted(o.Name for o in self.doc.Objects), names)
+        self.assertEqual(shapes.shape_digest(self.box.Shape), digest)
+
+    def test_report_without_blocks_vtk_is_refused(self):
+        use_backend("canned.py")
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.5, blocks=True)
+        try:
+            runner.run_sync(j)
+            os.unlink(os.path.join(j.out_dir, "blocks.vtk"))
+            with self.assertRaisesRegex(BackendError, "wrote no blocks.vtk"):
+                j.finish(0)
+            with open(os.path.join(j.out_dir, "blocks.vtk"), "w") as f:
+                f.write("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                        "POINTS 8 double\n0 0 0\n")
+            with self.assertRaisesRegex(BackendError, "blocks.vtk is unusable"):
+                j.finish(0)
+        finally:
+            j.cleanup()

@@ -113,5 +113,57 @@ def scenario(h):
     h.check(part.ViewObject.Transparency == transparency,
             "undo restores the part's transparency: %d" % part.ViewObject.Transparency)
 
+    # The same through FrameFix_Blocks (framefix blocks): failures, cancel, canned blocks.
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Blocks")
+    yield 0.3
+    panel = AnalyzePanel.active
+    h.check(panel is not None and panel.blocks, "blocks: the Blocks panel is open")
+    for fake, expected, timeout in (("segv.sh", "crashed (killed by SIGSEGV)", 60),
+                                    ("hang.sh", "did not finish within 3 s", 3),
+                                    ("garbage.sh", "not valid JSON", 60),
+                                    ("reject.sh", "2 solids; select one solid", 60)):
+        os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, fake)
+        os.environ["FRAMEFIX_TIMEOUT"] = str(timeout)
+        h.button(Apply).click()
+        yield h.until(lambda: not panel.runner.is_running(), 70, "blocks: " + fake + " to end")
+        yield 0.2
+        text = panel.form.summary.text()
+        h.check(expected in text, "blocks: %s: the panel shows %r: %s" % (fake, expected, text))
+        h.check(sorted(o.Name for o in doc.Objects) == names, "blocks: %s: document unchanged"
+                % fake)
+        h.check(shape_digest(part.Shape) == digest, "blocks: %s: part unchanged" % fake)
+    pidfile = tempfile.NamedTemporaryFile(suffix=".pids", delete=False).name
+    os.environ.update(FRAMEFIX_BACKEND=os.path.join(FAKES, "hang.sh"), FRAMEFIX_TIMEOUT="60",
+                      FAKE_BACKEND_PIDFILE=pidfile)
+    h.button(Apply).click()
+    yield h.until(lambda: os.path.getsize(pidfile) > 0, 10, "blocks: hang.sh to start")
+    h.button(Cancel).click()
+    yield h.until(lambda: AnalyzePanel.active is None, 10, "blocks: Cancel to close the panel")
+    yield 0.5
+    with open(pidfile) as f:
+        pids = [int(p) for p in f.read().split()]
+    h.check(pids and not any(alive(p) for p in pids), "blocks: Cancel killed the backend")
+    h.check(sorted(o.Name for o in doc.Objects) == names, "blocks: Cancel: document unchanged")
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Blocks")
+    yield 0.3
+    panel = AnalyzePanel.active
+    os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, "canned.py")
+    h.button(Apply).click()
+    yield h.until(lambda: not panel.runner.is_running(), 20, "blocks: canned run to end")
+    yield 0.3
+    blocks = doc.getObject("Blocks")
+    h.check(blocks is not None and blocks.isValid() and blocks.Count == 2,
+            "blocks: canned: Blocks object created")
+    h.check(blocks is not None and blocks.ViewObject.Proxy.coloured == 6,
+            "blocks: canned: every tet coloured")
+    h.check("2 blocks, 1 valid" in panel.form.summary.text(), "blocks: canned: summary in the panel")
+    h.button(Ok).click()
+    yield h.until(lambda: AnalyzePanel.active is None, 10, "blocks: OK to close the panel")
+    doc.undo()
+    yield 0.2
+    h.check(sorted(o.Name for o in doc.Objects) == names, "blocks: undo removes the blocks")
+
 
 ffgui_harness.run(scenario)
