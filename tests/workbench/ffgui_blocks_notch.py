@@ -67,7 +67,7 @@ def scenario(h):
     h.expand_tree()
     h.show_all()
     view = FreeCADGui.ActiveDocument.ActiveView  # isometric from the pocket's side
-    view.setCameraOrientation(FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 180).multiply(
+    view.setCameraOrientation(FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), -90).multiply(
         view.getCameraOrientation()))
     FreeCADGui.SendMsgToActiveView("ViewFit")
     yield 1.0
