@@ -158,6 +158,25 @@ TEST(Solver, DirectSolversAgreeWithCg) {
     }
 }
 
+// The solver runs on a reverse Cuthill-McKee numbering (reorder.h) and maps every output back.
+TEST(Solver, RenumberingDoesNotChangeTheField) {
+    const testing::Fixture fx = twisted_cube();
+    const TetTopology topo = build_topology(fx.mesh);
+    const Constraints c = twisted_constraints(fx.mesh);
+    FieldOptions o;
+    o.max_iterations = 3;
+    o.cg_tolerance = 1e-10;
+    o.relaxed_final_step = true;
+    const FrameField a = solve_frame_field(fx.mesh, topo, c, o);
+    o.reorder = false;
+    const FrameField b = solve_frame_field(fx.mesh, topo, c, o);
+    EXPECT_LT((a.coefficients - b.coefficients).cwiseAbs().maxCoeff(), 1e-7);
+    // (axes are not compared: the 24 rotations of a frame are equivalent, either may come out)
+    EXPECT_LT((a.relaxed_norm - b.relaxed_norm).cwiseAbs().maxCoeff(), 1e-7);
+    EXPECT_LT((a.distance - b.distance).cwiseAbs().maxCoeff(), 1e-6);
+    EXPECT_NEAR(a.energy, b.energy, 1e-8 * b.energy);
+}
+
 TEST(Solver, BadInputIsAFieldError) {
     const testing::Fixture fx = testing::cube_tets(2);
     const TetTopology topo = build_topology(fx.mesh);
