@@ -64,6 +64,7 @@ def timeout_from_env(default=DEFAULT_TIMEOUT_S):
 
 
 METHODS = ("snap", "fillet", "extrude-curves", "extrude-nodes")  # `framefix correct --method`
+AVAILABLE_METHODS = ("snap",)  # the backend refuses the others (exit 2, "not available yet")
 BLOCK_METHODS = ("snap", "none")  # `framefix blocks --method`: the correction before the cut
 BLOCKS_VTK = "blocks.vtk"  # the tets labelled by block, beside report.json
 

@@ -6,7 +6,7 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
-from ..job import BLOCK_METHODS, METHODS
+from ..job import AVAILABLE_METHODS, BLOCK_METHODS, METHODS
 from ..report import blocks_text, curve_breakdown
 
 
@@ -41,13 +41,19 @@ class AnalyzeForm(QtWidgets.QWidget):
         if method:
             grid.addWidget(QtWidgets.QLabel("Method"), 2, 0)
             self.method = QtWidgets.QComboBox()
-            self.method.addItems(list(BLOCK_METHODS if blocks else METHODS))
-            self.method.setCurrentText(method)
+            for name in BLOCK_METHODS if blocks else METHODS:
+                self.method.addItem(name, name)  # the data is the method, whatever the text says
+            if not blocks:  # the paper's other methods: listed, greyed out until the backend has them
+                for i, name in enumerate(METHODS):
+                    if name not in AVAILABLE_METHODS:
+                        self.method.setItemText(i, name + " (not yet available)")
+                        self.method.model().item(i).setEnabled(False)
+            self.method.setCurrentIndex(max(0, self.method.findData(method)))
             self.method.setToolTip(
                 "Correction before cutting: snap moves 3-5 curves onto the boundary; none cuts "
                 "the field as it is" if blocks else
-                "snap: move 3-5 curves onto the boundary (the paper's first approach); the "
-                "others change the geometry or the mesh")
+                "snap: move 3-5 curves onto the boundary (the paper's recommended approach); "
+                "fillet, extrude-curves and extrude-nodes are not available yet")
             grid.addWidget(self.method, 2, 1, 1, 2)
         layout.addLayout(grid)
         self.bar = QtWidgets.QProgressBar()

@@ -102,7 +102,7 @@ class AnalyzePanel:
 
     def chosen_method(self):
         """The correction method; "" for an analysis."""
-        return self.form.method.currentText() if self.form.method is not None else ""
+        return self.form.method.currentData() if self.form.method is not None else ""
 
     def _update_estimate(self, *_):
         self.form.show_estimate(self.volume)
