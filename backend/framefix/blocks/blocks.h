@@ -34,8 +34,11 @@ struct BlockOptions {
     int min_component_vertices = 8;   // smaller vertex components adopt a neighbour's label
     double min_piece_fraction = 0.005;  // face-connected pieces below this fraction of the tets merge
     double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
-    double sliver_area = 6;        // patches touching <= 2 other patches merge below this area, in h^2
-    double thin_width = 0.75;      // patches with 2 area / perimeter below this merge (staircase strips), in h
+    double sliver_area = 6;        // patches touching <= 3 other patches merge below this area, in h^2
+    // Patches with w = 2 area / perimeter below this merge (staircase strips), in h. Section 0 used
+    // 0.75 on gmsh meshes; TetGen meshes leave ~0.8 h strips where 4 blocks meet, and a real face of
+    // a block >= 3 h thick has w >= 1.5 h.
+    double thin_width = 1.0;
     double bevel_width = 2.5;      // strip-like patches below this width between two ~90 deg flanks split, in h
     double conform_tolerance = 2.5;  // corner positions of a shared face must match within this, in h
     double flat_deg = 35;          // a block edge whose two face normals are closer than this is flat

@@ -139,199 +139,252 @@ Points singular_points(const SingularityGraph& graph) {
     return out;
 }
 
-SheetSoup build_sheets(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
-                       const std::vector<SheetSource>& sources, const Points& singular, double h,
-                       const BlockOptions& options, SheetStats& stats) {
-    SheetSoup soup;
-    for (const SheetSource& s : sources) soup.source_kind.push_back(s.name);
-    TraceOptions trace;
-    trace.step = options.step * h;
-    trace.stop_distance = options.stop_distance * h;
-    trace.singular_points = singular;
-    trace.threads = options.threads;
-    const double cos_match = std::cos(options.match_deg * M_PI / 180);
+namespace {
 
-    // 1. One streamline per (source, seed, direction); singular seeds start 0.5 h off the curve.
-    std::map<std::tuple<int, int, int>, int> index;
+// The state of one build_sheets call: traced streamlines, the soup under construction, and the
+// streamline pairs that later steps continue.
+class SheetTracer {
+public:
+    SheetTracer(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
+                const std::vector<SheetSource>& sources, const Points& singular, double h, const BlockOptions& o,
+                SheetSoup& soup, SheetStats& stats)
+        : mesh_(mesh), field_(field), locator_(locator), sources_(sources), h_(h), stats_(stats),
+          soup_(soup, h, o.overshoot), cos_match_(std::cos(o.match_deg * M_PI / 180)) {
+        trace_.step = o.step * h;
+        trace_.stop_distance = o.stop_distance * h;
+        trace_.singular_points = singular;
+        trace_.threads = o.threads;
+    }
+
+    void trace_seeds();
+    void zip_seeds(int si);
+    void extend_past_boundary_ends(int si);
+    void collect_cross_jobs(int si);
+    void cross_extensions();
+    void finish() { soup_.finish(); }
+
+private:
+    struct Job { int si, ki, di, sign; };  // cross extension from streamline (si, ki, di), tangent sign
+
+    std::vector<Traced> run(const std::vector<Eigen::Vector3d>& P, const std::vector<Eigen::Vector3d>& V,
+                            const std::vector<Eigen::Vector3d>* prefix);
+    const Traced& line(int si, int ki, int di) const { return lines_[index_.at({si, ki, di})]; }
+    bool widen(int si) const { return si >= 0 && sources_[si].kind != SheetSource::Singular; }
+    bool matched(const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D) const {
+        for (const auto& b : D) if (a.dot(b) >= cos_match_) return true;
+        return false;
+    }
+
+    const TetMesh& mesh_;
+    const FrameField& field_;
+    const TetLocator& locator_;
+    const std::vector<SheetSource>& sources_;
+    double h_;
+    SheetStats& stats_;
+    SoupBuilder soup_;
+    double cos_match_;
+    TraceOptions trace_;
+    std::map<std::tuple<int, int, int>, int> index_;  // (source, seed, direction) -> lines_ index
+    std::vector<Traced> lines_;
+    std::vector<std::pair<Poly, Poly>> diverging_;   // neighbouring streamlines > 3 h apart
+    std::vector<Job> jobs_;
+};
+
+bool usable(const Traced& t) { return t.points.size() >= 2; }
+
+std::vector<Traced> SheetTracer::run(const std::vector<Eigen::Vector3d>& P, const std::vector<Eigen::Vector3d>& V,
+                                     const std::vector<Eigen::Vector3d>* prefix) {
+    Points seeds(Eigen::Index(P.size()), 3), dirs(Eigen::Index(P.size()), 3);
+    for (size_t i = 0; i < P.size(); ++i) seeds.row(Eigen::Index(i)) = P[i].transpose(), dirs.row(Eigen::Index(i)) = V[i].transpose();
+    const std::vector<Streamline> raw = trace_streamlines(mesh_, field_, locator_, seeds, dirs, trace_);
+    std::vector<Traced> out(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i) {
+        count(stats_, raw[i].reason);
+        out[i].reason = raw[i].reason;
+        if (raw[i].reason == StopReason::StartOutside) continue;
+        out[i].points = to_poly(raw[i].points);
+        if (prefix) out[i].points.insert(out[i].points.begin(), (*prefix)[i]);
+        // A streamline that left the solid ends on the boundary: go 0.25 h beyond so that the
+        // mesh edges next to the boundary are cut too.
+        const Poly& q = out[i].points;
+        if (raw[i].reason == StopReason::LeftSolid && q.size() >= 2 && (q.back() - q[q.size() - 2]).norm() > 0)
+            out[i].points.push_back(q.back() + 0.25 * h_ * (q.back() - q[q.size() - 2]).normalized());
+    }
+    stats_.streamlines += int(raw.size());
+    return out;
+}
+
+// One streamline per (source, seed, direction); singular seeds start 0.5 h off the curve, and
+// every polyline starts AT its seed.
+void SheetTracer::trace_seeds() {
     std::vector<Eigen::Vector3d> p0, v0, anchor;
-    for (int si = 0; si < int(sources.size()); ++si)
-        for (int ki = 0; ki < int(sources[si].seeds.size()); ++ki) {
-            const SheetSeed& seed = sources[si].seeds[ki];
-            const double off = sources[si].kind == SheetSource::Singular ? 0.5 * h : 0.02 * h;
+    for (int si = 0; si < int(sources_.size()); ++si)
+        for (int ki = 0; ki < int(sources_[si].seeds.size()); ++ki) {
+            const SheetSeed& seed = sources_[si].seeds[ki];
+            const double off = sources_[si].kind == SheetSource::Singular ? 0.5 * h_ : 0.02 * h_;
             for (int di = 0; di < int(seed.directions.size()); ++di) {
-                index[{si, ki, di}] = int(p0.size());
+                index_[{si, ki, di}] = int(p0.size());
                 p0.push_back(seed.point + off * seed.directions[di]), v0.push_back(seed.directions[di]);
                 anchor.push_back(seed.point);
             }
         }
-    auto run = [&](const std::vector<Eigen::Vector3d>& P, const std::vector<Eigen::Vector3d>& V,
-                   const std::vector<Eigen::Vector3d>* prefix) {
-        Points seeds(Eigen::Index(P.size()), 3), dirs(Eigen::Index(P.size()), 3);
-        for (size_t i = 0; i < P.size(); ++i) seeds.row(Eigen::Index(i)) = P[i].transpose(), dirs.row(Eigen::Index(i)) = V[i].transpose();
-        std::vector<Streamline> raw = trace_streamlines(mesh, field, locator, seeds, dirs, trace);
-        std::vector<Traced> out(raw.size());
-        for (size_t i = 0; i < raw.size(); ++i) {
-            count(stats, raw[i].reason);
-            out[i].reason = raw[i].reason;
-            if (raw[i].reason == StopReason::StartOutside) continue;
-            out[i].points = to_poly(raw[i].points);
-            if (prefix) out[i].points.insert(out[i].points.begin(), (*prefix)[i]);
-            // A streamline that left the solid ends on the boundary: go 0.25 h beyond so that the
-            // mesh edges next to the boundary are cut too.
-            const Poly& q = out[i].points;
-            if (raw[i].reason == StopReason::LeftSolid && q.size() >= 2 && (q.back() - q[q.size() - 2]).norm() > 0)
-                out[i].points.push_back(q.back() + 0.25 * h * (q.back() - q[q.size() - 2]).normalized());
-        }
-        stats.streamlines += int(raw.size());
-        return out;
-    };
-    const std::vector<Traced> lines = run(p0, v0, &anchor);
-    auto line = [&](int si, int ki, int di) -> const Traced& { return lines[index.at({si, ki, di})]; };
-    auto usable = [](const Traced& t) { return t.points.size() >= 2; };
+    lines_ = run(p0, v0, &anchor);
+}
 
-    SoupBuilder soup_builder(soup, h, options.overshoot);
-    std::vector<std::pair<Poly, Poly>> diverging;
-    // Cross-extension jobs: (source, seed, direction, sign of the tangent pointing away from the sheet).
-    struct Job { int si, ki, di, sign; };
-    std::vector<Job> jobs;
-    for (int si = 0; si < int(sources.size()); ++si) {
-        const std::vector<SheetSeed>& S = sources[si].seeds;
-        const bool widen = sources[si].kind != SheetSource::Singular;
-        // 2. Ribbons between consecutive seeds (skip up to 2 seeds that lost this direction).
-        for (int ki = 0; ki + 1 < int(S.size()); ++ki)
-            for (int di = 0; di < int(S[ki].directions.size()); ++di) {
-                const Eigen::Vector3d& a = S[ki].directions[di];
-                for (int kj = ki + 1; kj < std::min(ki + 4, int(S.size())); ++kj) {
-                    int best = -1;
-                    for (int dj = 0; dj < int(S[kj].directions.size()); ++dj)
-                        if (best < 0 || a.dot(S[kj].directions[dj]) > a.dot(S[kj].directions[best])) best = dj;
-                    if (best < 0 || a.dot(S[kj].directions[best]) < cos_match) continue;
-                    const Traced &A = line(si, ki, di), &B = line(si, kj, best);
-                    if (usable(A) && usable(B)) {
-                        const double gap = soup_builder.ribbon(A, B, si, widen);
-                        ++stats.ribbons;
-                        if (gap > 3 * h) diverging.push_back({A.points, B.points});
-                    }
-                    break;
+// Ribbons between consecutive seeds whose directions match (a seed that lost a direction is
+// skipped, up to 2 seeds ahead).
+void SheetTracer::zip_seeds(int si) {
+    const std::vector<SheetSeed>& S = sources_[si].seeds;
+    for (int ki = 0; ki + 1 < int(S.size()); ++ki)
+        for (int di = 0; di < int(S[ki].directions.size()); ++di) {
+            const Eigen::Vector3d& a = S[ki].directions[di];
+            for (int kj = ki + 1; kj < std::min(ki + 4, int(S.size())); ++kj) {
+                int best = -1;
+                for (int dj = 0; dj < int(S[kj].directions.size()); ++dj)
+                    if (best < 0 || a.dot(S[kj].directions[dj]) > a.dot(S[kj].directions[best])) best = dj;
+                if (best < 0 || a.dot(S[kj].directions[best]) < cos_match_) continue;
+                const Traced &A = line(si, ki, di), &B = line(si, kj, best);
+                if (usable(A) && usable(B)) {
+                    const double gap = soup_.ribbon(A, B, si, widen(si));
+                    ++stats_.ribbons;
+                    if (gap > 3 * h_) diverging_.push_back({A.points, B.points});
                 }
+                break;
             }
-        if (S.size() < 2) continue;
-        // Direction jumps between consecutive seeds start cross extensions too.
-        for (int ki = 0; ki + 1 < int(S.size()); ++ki) {
-            auto matched = [&](const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D) {
-                for (const auto& b : D) if (a.dot(b) >= cos_match) return true;
-                return false;
-            };
-            for (int di = 0; di < int(S[ki].directions.size()); ++di)
-                if (!matched(S[ki].directions[di], S[ki + 1].directions)) jobs.push_back({si, ki, di, +1});
-            for (int dj = 0; dj < int(S[ki + 1].directions.size()); ++dj)
-                if (!matched(S[ki + 1].directions[dj], S[ki].directions)) jobs.push_back({si, ki + 1, dj, -1});
         }
-        for (int di = 0; di < int(S.front().directions.size()); ++di) jobs.push_back({si, 0, di, -1});
-        for (int di = 0; di < int(S.back().directions.size()); ++di) jobs.push_back({si, int(S.size()) - 1, di, +1});
+}
 
-        // 3. Past a source end on the boundary: the nearest complete seed's streamlines, translated
-        // to the end point and 0.5 h beyond it.
-        std::map<int, int> counts;
-        for (const auto& s : S) counts[int(s.directions.size())] += 1;
-        int full = 0, most = 0;
-        for (auto [k, c] : counts) if (c > most) most = c, full = k;
-        for (int e = 0; e < 2; ++e) {
-            if (!sources[si].boundary_end[e] || full == 0) continue;
-            int k0 = -1;
-            for (int j = 0; j < int(S.size()) && k0 < 0; ++j) {
-                const int k = e == 0 ? j : int(S.size()) - 1 - j;
-                bool ok = int(S[k].directions.size()) == full;
-                for (int d = 0; d < full && ok; ++d) ok = usable(line(si, k, d));
-                if (ok) k0 = k;
-            }
-            if (k0 < 0) continue;
-            const Eigen::Vector3d pend = e == 0 ? S.front().point : S.back().point;
-            const Eigen::Vector3d pin = e == 0 ? S[1].point : S[S.size() - 2].point;
-            const Eigen::Vector3d ext = pend + 0.5 * h * (pend - pin).normalized();
-            for (int d = 0; d < full; ++d) {
-                Traced A = line(si, k0, d);
-                for (const Eigen::Vector3d& target : {pend, ext}) {
-                    Traced B = A;
-                    const Eigen::Vector3d shift = target - S[k0].point;
-                    for (auto& p : B.points) p += shift;
-                    soup_builder.ribbon(A, B, si, widen);
-                    A = B;
-                }
+// Past a source end on the boundary: the nearest complete seed's streamlines, translated to the
+// end point and 0.5 h beyond it.
+void SheetTracer::extend_past_boundary_ends(int si) {
+    const std::vector<SheetSeed>& S = sources_[si].seeds;
+    if (S.size() < 2) return;
+    std::map<int, int> counts;
+    for (const auto& s : S) counts[int(s.directions.size())] += 1;
+    int full = 0, most = 0;
+    for (auto [k, c] : counts) if (c > most) most = c, full = k;
+    for (int e = 0; e < 2; ++e) {
+        if (!sources_[si].boundary_end[e] || full == 0) continue;
+        int k0 = -1;
+        for (int j = 0; j < int(S.size()) && k0 < 0; ++j) {
+            const int k = e == 0 ? j : int(S.size()) - 1 - j;
+            bool ok = int(S[k].directions.size()) == full;
+            for (int d = 0; d < full && ok; ++d) ok = usable(line(si, k, d));
+            if (ok) k0 = k;
+        }
+        if (k0 < 0) continue;
+        const Eigen::Vector3d pend = e == 0 ? S.front().point : S.back().point;
+        const Eigen::Vector3d pin = e == 0 ? S[1].point : S[S.size() - 2].point;
+        const Eigen::Vector3d ext = pend + 0.5 * h_ * (pend - pin).normalized();
+        for (int d = 0; d < full; ++d) {
+            Traced A = line(si, k0, d);
+            for (const Eigen::Vector3d& target : {pend, ext}) {
+                Traced B = A;
+                const Eigen::Vector3d shift = target - S[k0].point;
+                for (auto& p : B.points) p += shift;
+                soup_.ribbon(A, B, si, widen(si));
+                A = B;
             }
         }
     }
+}
 
-    // 4. Cross extensions: from each job's streamline, trace along the source tangent (away from
-    // the sheet) and zip neighbouring cross streamlines; then close up to both ends of the
-    // generating streamline. Diverging neighbours are bridged the same way along the in-sheet normal.
+// Sheet borders that the cross extension continues: the streamlines of both end seeds and of
+// seed pairs whose directions jump.
+void SheetTracer::collect_cross_jobs(int si) {
+    const std::vector<SheetSeed>& S = sources_[si].seeds;
+    if (S.size() < 2) return;
+    for (int ki = 0; ki + 1 < int(S.size()); ++ki) {
+        for (int di = 0; di < int(S[ki].directions.size()); ++di)
+            if (!matched(S[ki].directions[di], S[ki + 1].directions)) jobs_.push_back({si, ki, di, +1});
+        for (int dj = 0; dj < int(S[ki + 1].directions.size()); ++dj)
+            if (!matched(S[ki + 1].directions[dj], S[ki].directions)) jobs_.push_back({si, ki + 1, dj, -1});
+    }
+    for (int di = 0; di < int(S.front().directions.size()); ++di) jobs_.push_back({si, 0, di, -1});
+    for (int di = 0; di < int(S.back().directions.size()); ++di) jobs_.push_back({si, int(S.size()) - 1, di, +1});
+}
+
+// From each job's streamline, trace along the source tangent (away from the sheet), zip
+// neighbouring cross streamlines, and close up to both ends of the generating streamline.
+// Diverging neighbours are bridged the same way along the in-sheet normal.
+void SheetTracer::cross_extensions() {
     std::vector<Eigen::Vector3d> cp, cv;
-    std::vector<int> cjob;
-    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> janchor;
-    std::vector<int> jsource;
-    auto add_job_points = [&](const Poly& A, auto&& direction_at) {
-        const int ji = int(janchor.size());
-        janchor.push_back({A.front(), A.back()});
+    std::vector<std::vector<int>> members;           // per cross job: indices into cp
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> anchors;  // ends of the generating streamline
+    std::vector<int> job_source;                     // -1: diverging bridge (never widened)
+    auto add_job = [&](const Poly& A, int source, auto&& direction_at) {
+        members.emplace_back(), anchors.push_back({A.front(), A.back()}), job_source.push_back(source);
         const double la = poly_length(A);
-        const Poly Ar = resample(A, linspace(0, la, std::max(2, int(std::ceil(la / (0.5 * h)))) + 1));
+        const Poly Ar = resample(A, linspace(0, la, std::max(2, int(std::ceil(la / (0.5 * h_)))) + 1));
         for (size_t k = 1; k < Ar.size(); ++k) {
             Eigen::Vector3d dir;
             if (!direction_at(Ar, k, dir)) continue;
-            cp.push_back(Ar[k] + 0.05 * h * dir), cv.push_back(dir), cjob.push_back(ji);
+            members.back().push_back(int(cp.size()));
+            cp.push_back(Ar[k] + 0.05 * h_ * dir), cv.push_back(dir);
         }
     };
-    for (const Job& j : jobs) {
-        const std::vector<SheetSeed>& S = sources[j.si].seeds;
+    for (const Job& j : jobs_) {
+        const std::vector<SheetSeed>& S = sources_[j.si].seeds;
         const Traced& A = line(j.si, j.ki, j.di);
         if (!usable(A) || poly_length(A.points) < 1e-9) continue;
         const Eigen::Vector3d a = S[std::max(j.ki - 1, 0)].point, b = S[std::min(j.ki + 1, int(S.size()) - 1)].point;
         const Eigen::Vector3d tv = j.sign * (b - a).normalized();
         if (!tv.allFinite()) continue;
-        jsource.push_back(j.si);
-        add_job_points(A.points, [&](const Poly&, size_t, Eigen::Vector3d& d) { d = tv; return true; });
+        add_job(A.points, j.si, [&](const Poly&, size_t, Eigen::Vector3d& d) { d = tv; return true; });
     }
-    for (const auto& [P, Q] : diverging)
+    for (const auto& [P, Q] : diverging_)
         for (const auto& [X, Y] : {std::pair<const Poly&, const Poly&>(P, Q), std::pair<const Poly&, const Poly&>(Q, P)}) {
             const double lx = poly_length(X), ly = poly_length(Y);
             if (lx < 1e-9 || ly < 1e-9) continue;
-            const int ns = std::max(2, int(std::ceil(lx / (0.5 * h)))) + 1;
+            const int ns = std::max(2, int(std::ceil(lx / (0.5 * h_)))) + 1;
             const Poly Yr = resample(Y, linspace(0, ly, ns));
-            jsource.push_back(-1);  // singular-like: never widened
-            add_job_points(X, [&](const Poly& Xr, size_t k, Eigen::Vector3d& d) {
+            add_job(X, -1, [&](const Poly& Xr, size_t k, Eigen::Vector3d& d) {
                 const Eigen::Vector3d tg = (Xr[std::min(k + 1, Xr.size() - 1)] - Xr[k - 1]).normalized();
                 const Eigen::Vector3d g = Yr[std::min(k, Yr.size() - 1)] - Xr[k];
                 d = g - g.dot(tg) * tg;
-                if (d.norm() < 0.5 * h) return false;
+                if (d.norm() < 0.5 * h_) return false;
                 d.normalize();
                 return true;
             });
         }
-    if (!cp.empty()) {
-        const std::vector<Traced> cross = run(cp, cv, nullptr);
-        for (int ji = 0; ji < int(janchor.size()); ++ji) {
-            std::vector<int> idx;
-            for (int i = 0; i < int(cjob.size()); ++i) if (cjob[i] == ji) idx.push_back(i);
-            const int si = jsource[ji];
-            const bool widen = si >= 0 && sources[si].kind != SheetSource::Singular;
-            const int source = si >= 0 ? si : 0;
-            std::vector<int> valid;
-            for (int i : idx) if (usable(cross[i])) valid.push_back(i);
-            for (size_t k = 0; k + 1 < valid.size(); ++k) {
-                soup_builder.ribbon(cross[valid[k]], cross[valid[k + 1]], source, widen);
-                ++stats.cross_ribbons;
-            }
-            if (valid.empty()) continue;
-            for (auto [i, target] : {std::pair<int, Eigen::Vector3d>(valid.front(), janchor[ji].first),
-                                     std::pair<int, Eigen::Vector3d>(valid.back(), janchor[ji].second)}) {
-                Traced B = cross[i];
-                const Eigen::Vector3d shift = target - B.points.front();
-                for (auto& p : B.points) p += shift;
-                soup_builder.ribbon(cross[i], B, source, widen);
-                ++stats.cross_ribbons;
-            }
+    if (cp.empty()) return;
+    const std::vector<Traced> cross = run(cp, cv, nullptr);
+    for (size_t ji = 0; ji < members.size(); ++ji) {
+        const int si = job_source[ji], source = std::max(si, 0);
+        std::vector<int> valid;
+        for (int i : members[ji]) if (usable(cross[i])) valid.push_back(i);
+        for (size_t k = 0; k + 1 < valid.size(); ++k) {
+            soup_.ribbon(cross[valid[k]], cross[valid[k + 1]], source, widen(si));
+            ++stats_.cross_ribbons;
+        }
+        if (valid.empty()) continue;
+        for (auto [i, target] : {std::pair<int, Eigen::Vector3d>(valid.front(), anchors[ji].first),
+                                 std::pair<int, Eigen::Vector3d>(valid.back(), anchors[ji].second)}) {
+            Traced B = cross[i];
+            const Eigen::Vector3d shift = target - B.points.front();
+            for (auto& p : B.points) p += shift;
+            soup_.ribbon(cross[i], B, source, widen(si));
+            ++stats_.cross_ribbons;
         }
     }
-    soup_builder.finish();
+}
+
+}  // namespace
+
+SheetSoup build_sheets(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
+                       const std::vector<SheetSource>& sources, const Points& singular, double h,
+                       const BlockOptions& options, SheetStats& stats) {
+    SheetSoup soup;
+    for (const SheetSource& s : sources) soup.source_kind.push_back(s.name);
+    SheetTracer tracer(mesh, field, locator, sources, singular, h, options, soup, stats);
+    tracer.trace_seeds();
+    for (int si = 0; si < int(sources.size()); ++si) {
+        tracer.zip_seeds(si);
+        tracer.collect_cross_jobs(si);
+        tracer.extend_past_boundary_ends(si);
+    }
+    tracer.cross_extensions();
+    tracer.finish();
     stats.sources = int(sources.size());
     return soup;
 }

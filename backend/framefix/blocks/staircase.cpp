@@ -3,7 +3,6 @@
 // Both are removed by moving the minority side of the edge ring / vertex star.
 #include <algorithm>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "framefix/blocks/partition.h"
 
@@ -35,73 +34,77 @@ bool move_minority(const std::vector<int>& ring, int b, Eigen::VectorXi& lab) {
     return true;
 }
 
-long long key2(long long a, long long b, long long n) { return a * n + b; }
-
-// One pass over block-boundary faces: (edge, block) with >= 4 boundary faces of that block.
-int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab) {
-    const long long nv = mesh.num_vertices();
-    const long long nb = lab.maxCoeff() + 2;
-    std::unordered_map<long long, int> count;  // key (edge key, block)
-    for (int f = 0; f < int(topo.faces.rows()); ++f) {
-        const int t0 = topo.face_tets(f, 0), t1 = topo.face_tets(f, 1);
+// Block-boundary faces as (face, block on this side): both sides of faces between two blocks,
+// the inner side of domain-boundary faces.
+template <class F> void for_each_block_face(const TetTopology& topo, const Eigen::VectorXi& lab, F&& f) {
+    for (int face = 0; face < int(topo.faces.rows()); ++face) {
+        const int t0 = topo.face_tets(face, 0), t1 = topo.face_tets(face, 1);
         const int l0 = t0 >= 0 ? lab[t0] : -1, l1 = t1 >= 0 ? lab[t1] : -1;
         if (l0 == l1) continue;
-        for (int k = 0; k < 3; ++k) {
-            const int a = topo.faces(f, k), c = topo.faces(f, (k + 1) % 3);
-            const long long e = key2(std::min(a, c), std::max(a, c), nv);
-            for (int l : {l0, l1}) if (l >= 0) count[key2(e, l, nb)] += 1;
-        }
+        if (l0 >= 0) f(face, l0);
+        if (l1 >= 0) f(face, l1);
     }
-    std::vector<long long> bad;
-    for (auto [k, c] : count) if (c >= 4) bad.push_back(k);
-    std::sort(bad.begin(), bad.end());  // deterministic order
+}
+
+// One pass: (edge, block) pairs with >= 4 boundary faces of that block (two fans of the block
+// touching along the edge). Sorting keys is several times faster than hashing them.
+int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab) {
+    const long long nv = mesh.num_vertices();
+    std::vector<std::pair<long long, int>> entries;  // (edge key, block)
+    for_each_block_face(topo, lab, [&](int f, int b) {
+        for (int k = 0; k < 3; ++k) {
+            const long long a = topo.faces(f, k), c = topo.faces(f, (k + 1) % 3);
+            entries.push_back({std::min(a, c) * nv + std::max(a, c), b});
+        }
+    });
+    std::sort(entries.begin(), entries.end());
     int moved = 0;
-    for (long long k : bad) {
-        const long long e = k / nb;
-        const int b = int(k % nb), a = int(e / nv), c = int(e % nv);
-        std::vector<int> ring;
-        for (int t : star(topo, a))
-            for (int i = 0; i < 4; ++i) if (mesh.tets(t, i) == c) { ring.push_back(t); break; }
-        moved += move_minority(ring, b, lab);
+    for (size_t i = 0; i < entries.size();) {
+        size_t j = i;
+        while (j < entries.size() && entries[j] == entries[i]) ++j;
+        if (j - i >= 4) {
+            const int a = int(entries[i].first / nv), c = int(entries[i].first % nv);
+            std::vector<int> ring;
+            for (int t : star(topo, a))
+                for (int k = 0; k < 4; ++k) if (mesh.tets(t, k) == c) { ring.push_back(t); break; }
+            moved += move_minority(ring, entries[i].second, lab);
+        }
+        i = j;
     }
     return moved;
 }
 
 // One pass: (vertex, block) whose link in the block's boundary triangles has >= 2 components.
 int fix_vertices(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab) {
-    const long long nb = lab.maxCoeff() + 2;
-    std::unordered_map<long long, std::vector<std::pair<int, int>>> link;  // (vertex, block) -> link edges
-    for (int f = 0; f < int(topo.faces.rows()); ++f) {
-        const int t0 = topo.face_tets(f, 0), t1 = topo.face_tets(f, 1);
-        const int l0 = t0 >= 0 ? lab[t0] : -1, l1 = t1 >= 0 ? lab[t1] : -1;
-        if (l0 == l1) continue;
-        for (int l : {l0, l1}) {
-            if (l < 0) continue;
-            for (int k = 0; k < 3; ++k)
-                link[key2(topo.faces(f, k), l, nb)].push_back({topo.faces(f, (k + 1) % 3), topo.faces(f, (k + 2) % 3)});
-        }
-    }
+    struct Link { long long vert_block; int a, c; bool operator<(const Link& o) const { return vert_block < o.vert_block; } };
+    const long long nb = lab.maxCoeff() + 1;
+    std::vector<Link> links;
+    for_each_block_face(topo, lab, [&](int f, int b) {
+        for (int k = 0; k < 3; ++k)
+            links.push_back({topo.faces(f, k) * nb + b, topo.faces(f, (k + 1) % 3), topo.faces(f, (k + 2) % 3)});
+    });
+    std::sort(links.begin(), links.end());
     std::vector<long long> bad;
-    for (auto& [k, edges] : link) {
-        // Components of the link graph, by repeated flooding (links are small).
-        std::unordered_map<int, int> comp;
-        std::unordered_map<int, std::vector<int>> adj;
-        for (auto [a, c] : edges) adj[a].push_back(c), adj[c].push_back(a);
-        int n = 0;
-        for (auto& [v, _] : adj) {
-            if (comp.count(v)) continue;
-            ++n;
-            std::vector<int> stack{v};
-            comp[v] = n;
-            while (!stack.empty()) {
-                const int x = stack.back();
-                stack.pop_back();
-                for (int y : adj[x]) if (!comp.count(y)) comp[y] = n, stack.push_back(y);
-            }
+    std::vector<int> verts, parent;
+    for (size_t i = 0; i < links.size();) {
+        size_t j = i;
+        while (j < links.size() && links[j].vert_block == links[i].vert_block) ++j;
+        verts.clear();
+        for (size_t k = i; k < j; ++k) verts.push_back(links[k].a), verts.push_back(links[k].c);
+        std::sort(verts.begin(), verts.end());
+        verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+        parent.resize(verts.size());
+        for (size_t k = 0; k < verts.size(); ++k) parent[k] = int(k);
+        auto find = [&](int x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
+        auto local = [&](int v) { return int(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin()); };
+        int components = int(verts.size());
+        for (size_t k = i; k < j; ++k) {
+            const int x = find(local(links[k].a)), y = find(local(links[k].c));
+            if (x != y) parent[x] = y, --components;
         }
-        if (n >= 2) bad.push_back(k);
+        if (components >= 2) bad.push_back(links[i].vert_block);
+        i = j;
     }
-    std::sort(bad.begin(), bad.end());
     int moved = 0;
     for (long long k : bad) moved += move_minority(star(topo, int(k / nb)), int(k % nb), lab);
     return moved;

@@ -92,9 +92,9 @@ void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, 
         const PatchStats s = patch_stats(S, adj, patch, n);
         int small = -1;
         for (int p = 0; p < n; ++p) {
-            // A face of a hexahedron has 4 neighbouring faces: a small patch with <= 2 is a sliver
+            // A face of a hexahedron has 4 neighbouring faces: a small patch with <= 3 is a sliver
             // where 4 blocks meet along a line (two sheets crossing), not a face.
-            const double limit = (s.contact[p].size() <= 2 ? o.sliver_area : o.patch_merge_area) * h * h;
+            const double limit = (s.contact[p].size() <= 3 ? o.sliver_area : o.patch_merge_area) * h * h;
             if (s.area[p] < limit && !s.contact[p].empty() && (small < 0 || s.area[p] < s.area[small])) small = p;
         }
         if (small < 0) break;
