@@ -34,7 +34,9 @@ struct BlockOptions {
     int min_component_vertices = 8;   // smaller vertex components adopt a neighbour's label
     double min_piece_fraction = 0.005;  // face-connected pieces below this fraction of the tets merge
     double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
-    double sliver_area = 6;        // patches touching <= 3 other patches merge below this area, in h^2
+    // Patches touching <= 3 other patches merge below this area, in h^2: a face of a hexahedron has
+    // 4 neighbouring faces, so such a patch is a sliver where four blocks meet along a line.
+    double sliver_area = 6;
     // Patches with w = 2 area / perimeter below this merge (staircase strips), in h. Section 0 used
     // 0.75 on gmsh meshes; TetGen meshes leave ~0.8 h strips where 4 blocks meet, and a real face of
     // a block >= 3 h thick has w >= 1.5 h.
@@ -52,8 +54,10 @@ struct BlockInfo {
     int faces = 0, edges = 0, corners = 0;  // counts on the block's boundary after patch cleaning
     int euler = 0;                 // Euler characteristic of the boundary surface (2 for a sphere)
     bool manifold = false;         // every boundary edge in exactly two boundary triangles
-    int flat_edges = 0;            // block edges whose face normals are < flat_deg apart
-    int flat_corners = 0;          // corners with two incident faces whose normals are < flat_deg apart
+    // Flat-edge proxy (section 0): outward mean normals of the two faces, within 2 h of their common
+    // chain, closer than flat_deg (about 90 deg at a proper edge). Counted per pair of adjacent faces.
+    int flat_edges = 0;
+    int flat_corners = 0;          // corners where two incident faces' mean normals (within 2 h) are < flat_deg apart
     std::vector<int> neighbours;   // neighbouring block ids, ascending
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // mean of the block's vertices, model units
     std::string reason;            // empty if valid, else the first failed test ("faces 5", ...)
