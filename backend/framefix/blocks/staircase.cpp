@@ -113,9 +113,13 @@ int fix_vertices(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& 
 }  // namespace
 
 Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi lab) {
-    for (int pass = 0; pass < 10 && fix_edges(mesh, topo, lab) > 0; ++pass) compact_labels(lab);
-    for (int pass = 0; pass < 6 && fix_vertices(mesh, topo, lab) > 0; ++pass) compact_labels(lab);
-    for (int pass = 0; pass < 10 && fix_edges(mesh, topo, lab) > 0; ++pass) compact_labels(lab);
+    // Fixing an edge can pinch a vertex and the other way round: alternate until both are clean.
+    for (int round = 0; round < 4; ++round) {
+        int moved = 0;
+        for (int pass = 0, m = 1; pass < 10 && m > 0; ++pass) moved += m = fix_edges(mesh, topo, lab), compact_labels(lab);
+        for (int pass = 0, m = 1; pass < 6 && m > 0; ++pass) moved += m = fix_vertices(mesh, topo, lab), compact_labels(lab);
+        if (moved == 0) break;
+    }
     compact_labels(lab);
     return lab;
 }
