@@ -87,7 +87,11 @@ EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<R
                 dead_sets.unite(int(i), int(j));
     for (size_t i = 0; i < dead.size(); ++i) dead[i]->group = dead_sets.find(int(i));
 
-    // Boundary ends sharing a vertex are one boundary node.
+    // Boundary ends sharing a vertex are one boundary node, unless the vertex lies on a B-rep
+    // edge: ends on either side of a curve are in different faces, hence different surface
+    // singularities (box_arc: the two ends of a short 3-5 curve straddle the imprinted arc).
+    std::vector<char> on_curve(size_t(c.mesh.num_vertices()), 0);
+    for (int e = 0; e < c.mesh.feature_edges.rows(); ++e) on_curve[c.mesh.feature_edges(e, 0)] = on_curve[c.mesh.feature_edges(e, 1)] = 1;
     std::vector<RawEnd*> bnd;
     for (RawChain& ch : chains)
         if (!ch.closed)
@@ -97,6 +101,7 @@ EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<R
     std::map<int, int> first_end;  // boundary vertex -> first end touching it
     for (size_t i = 0; i < bnd.size(); ++i)
         for (int v : end_boundary_verts(c, *bnd[i])) {
+            if (on_curve[v]) continue;
             auto [it, inserted] = first_end.emplace(v, int(i));
             if (!inserted) bnd_sets.unite(it->second, int(i));
         }
