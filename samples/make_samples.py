@@ -106,6 +106,10 @@ def write_bad_inputs():
     with open(os.path.join(DATA, 'garbage.step'), 'w') as f:
         f.write('this is not a STEP file\n' * 20)
     open(os.path.join(DATA, 'empty.step'), 'w').close()
+    # Good inputs in the other formats: the notch as IGES (loose faces, sewn by the loader) and BREP.
+    notch_solid = Part.read(os.path.join(HERE, 'notch.step'))
+    notch_solid.exportIges(os.path.join(DATA, 'notch.igs'))
+    notch_solid.exportBrep(os.path.join(DATA, 'notch.brep'))
 
 
 def main():

@@ -49,3 +49,13 @@ def test_l_prism_has_one_concave_feature_curve(analyze):
     report = analyze("l_prism.step", command="mesh")
     assert report["features"]["by_valence"]["3"] == 1
     assert report["features"]["by_valence"]["1"] == 17
+
+
+@pytest.mark.parametrize("name,kind", [("notch.igs", "iges"), ("notch.brep", "brep")])
+def test_iges_and_brep_inputs_give_the_same_part_as_step(analyze, name, kind):
+    from conftest import TESTDATA
+    other = analyze(TESTDATA / name)
+    step = analyze("notch.step")
+    assert other["input"]["kind"] == kind
+    assert other["features"]["by_valence"] == step["features"]["by_valence"]
+    assert other["singularities"]["summary"]["curves_3_5"] == 1

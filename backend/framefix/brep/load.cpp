@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
@@ -17,6 +18,9 @@
 #include <GProp_GProps.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
 #include <STEPControl_Reader.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -43,7 +47,8 @@ std::string plural(int n, const std::string& word) {
 }
 
 // The one solid of `shape`, or a closed shell turned into a solid; anything else is refused.
-TopoDS_Solid single_solid(const TopoDS_Shape& shape, const std::string& source) {
+// `sew_faces`: loose faces (IGES surface export) are sewn and accepted when they close a shell.
+TopoDS_Solid single_solid(const TopoDS_Shape& shape, const std::string& source, bool sew_faces) {
     if (shape.IsNull()) throw Error("load", source + " contains no shape; " + kOneSolid);
     const int solids = count(shape, TopAbs_SOLID, TopAbs_SHAPE);
     const int shells = count(shape, TopAbs_SHELL, TopAbs_SOLID);
@@ -68,6 +73,16 @@ TopoDS_Solid single_solid(const TopoDS_Shape& shape, const std::string& source) 
     }
     if (shells + faces + edges == 0)
         throw Error("load", source + " contains no solid (no geometry at all); " + kOneSolid);
+    if (sew_faces && shells == 0 && faces >= 2) {  // IGES stores a solid as loose trimmed faces
+        BRepBuilderAPI_Sewing sewing;
+        for (TopExp_Explorer it(shape, TopAbs_FACE); it.More(); it.Next()) sewing.Add(it.Current());
+        sewing.Perform();
+        const TopoDS_Shape sewn = sewing.SewedShape();
+        if (count(sewn, TopAbs_SHELL, TopAbs_SOLID) == 1 && count(sewn, TopAbs_FACE, TopAbs_SHELL) == 0)
+            return single_solid(sewn, source + " (faces sewn)", false);
+        throw Error("load", source + " holds " + plural(faces, "face") + " that do not sew into one closed shell; " +
+                                "export the solid as STEP");
+    }
     throw Error("load", source + " contains no solid but " + plural(shells, "shell") + ", " +
                             plural(faces, "face") + ", " + plural(edges, "edge") + "; " + kOneSolid);
 }
@@ -95,6 +110,8 @@ TopoDS_Shape read_file(const std::string& path, const std::string& kind) {
         return read_with(reader, path, "STEP");
     }
     if (kind == "iges") {
+        // The IGES reader prints its entity count on stdout, which belongs to the CLI's summary.
+        Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
         IGESControl_Reader reader;
         return read_with(reader, path, "IGES");
     }
@@ -110,7 +127,7 @@ TopoDS_Shape read_file(const std::string& path, const std::string& kind) {
 BrepModel make_model(const TopoDS_Shape& shape, const std::string& source, const std::string& path,
                      const std::string& kind) {
     return occt_call("load", source, [&] {
-        TopoDS_Solid solid = single_solid(shape, source);
+        TopoDS_Solid solid = single_solid(shape, source, kind == "iges");
         BRepCheck_Analyzer check(solid);
         if (!check.IsValid())
             throw Error("load", source + " is not a valid solid (BRepCheck_Analyzer failed); repair it, " +
