@@ -54,6 +54,26 @@ int finish(const framefix::AnalysisResult& r, const Args& a, const framefix::Cor
     return 0;
 }
 
+// One subcommand, start to finish; errors propagate to main's translation into exit codes.
+int run(const Args& a, const std::string& command) {
+    const auto o = options_from(a);
+    if (command == "mesh") return finish(framefix::mesh_part(a.part, o), a);
+    if (command == "analyze") return finish(framefix::analyze(a.part, o), a);
+    if (command == "blocks" && a.method == "none") {
+        auto r = framefix::analyze(a.part, o);
+        const auto b = framefix::decompose(r, nullptr, o);
+        return finish(r, a, nullptr, &b);
+    }
+    framefix::CorrectionOptions co;
+    co.method = a.method;
+    framefix::check_correction_method(co.method);  // refuse before the long analysis
+    auto r = framefix::analyze(a.part, o);
+    const auto c = framefix::correct(r, co, o);
+    if (command == "correct") return finish(r, a, &c);
+    const auto b = framefix::decompose(r, &c, o);
+    return finish(r, a, &c, &b);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,29 +108,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        const auto o = options_from(a);
-        if (mesh->parsed()) return finish(framefix::mesh_part(a.part, o), a);
-        if (correct->parsed()) {
-            framefix::CorrectionOptions co;
-            co.method = a.method;
-            framefix::check_correction_method(co.method);  // refuse before the long analysis
-            auto r = framefix::analyze(a.part, o);
-            const auto c = framefix::correct(r, co, o);
-            return finish(r, a, &c);
-        }
-        if (blocks->parsed()) {
-            auto r = framefix::analyze(a.part, o);
-            if (a.method == "none") {
-                const auto b = framefix::decompose(r, nullptr, o);
-                return finish(r, a, nullptr, &b);
-            }
-            framefix::CorrectionOptions co;
-            co.method = a.method;
-            const auto c = framefix::correct(r, co, o);
-            const auto b = framefix::decompose(r, &c, o);
-            return finish(r, a, &c, &b);
-        }
-        return finish(framefix::analyze(a.part, o), a);
+        return run(a, mesh->parsed() ? "mesh" : analyze->parsed() ? "analyze" : correct->parsed() ? "correct" : "blocks");
     } catch (const framefix::Error& e) {
         std::cerr << "framefix: error [" << e.stage() << "]: " << e.message() << "\n";
         return 2;
