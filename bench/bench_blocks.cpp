@@ -12,17 +12,15 @@
 #include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 
+#include "bench_common.h"
+
 using namespace framefix;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::string resolve(const std::string& name) {
-    if (name.find('/') != std::string::npos || name.find('.') != std::string::npos) return name;
-    return std::string(FRAMEFIX_SAMPLES_DIR) + "/" + name + ".step";
-}
+using bench::Clock;
+using bench::resolve;
+using bench::since;
 
 }  // namespace
 

@@ -13,16 +13,7 @@ from framefix_wb import analysis, backend, job, report, runner, shapes, sizing
 from framefix_wb.errors import BackendError, SelectionError
 from framefix_wb.objects.properties import report_of
 
-FAKES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fake_backends")
-
-
-def alive(pid):
-    """True if `pid` runs (a zombie counts as gone)."""
-    try:
-        with open("/proc/%d/stat" % pid) as f:
-            return f.read().split(")")[-1].split()[0] != "Z"
-    except FileNotFoundError:
-        return False
+from ffworkbench_testing import FAKES, alive
 
 
 def use_backend(name):

@@ -1,26 +1,17 @@
 """GUI with the real backend: select the notch, FrameFix_Analyze, Apply, wait; the analysis
 objects exist with one 3-5 curve; then FrameFix_Correct (snap) removes it. Screenshots of the
 whole window in output/gui_analyze/."""
-import os
-
-import FreeCAD
 import FreeCADGui
-import Part
 from PySide2 import QtWidgets
 
 import ffgui_harness
-
-SAMPLES = os.environ.get("FRAMEFIX_SAMPLES") or os.path.join(os.path.dirname(os.path.dirname(
-    os.path.dirname(os.path.abspath(ffgui_harness.__file__)))), "samples")
+from ffworkbench_testing import notch_document
 
 
 def scenario(h):
     from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
     FreeCADGui.activateWorkbench("FrameFixWorkbench")
-    doc = FreeCAD.newDocument("Notch")
-    part = doc.addObject("Part::Feature", "Notch")
-    part.Shape = Part.read(os.path.join(SAMPLES, "notch.step"))
-    doc.recompute()
+    doc, part = notch_document()
     h.show_all()
     h.clear_report_view()
     yield 0.5

@@ -11,18 +11,10 @@ import Part
 from PySide2 import QtWidgets
 
 import ffgui_harness
+from ffworkbench_testing import FAKES, alive
 
-FAKES = os.path.join(os.path.dirname(os.path.abspath(ffgui_harness.__file__)), "fake_backends")
 Apply, Ok = QtWidgets.QDialogButtonBox.Apply, QtWidgets.QDialogButtonBox.Ok
 Cancel = QtWidgets.QDialogButtonBox.Cancel
-
-
-def alive(pid):
-    try:
-        with open("/proc/%d/stat" % pid) as f:
-            return f.read().split(")")[-1].split()[0] != "Z"
-    except FileNotFoundError:
-        return False
 
 
 def scenario(h):

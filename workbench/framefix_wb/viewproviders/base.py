@@ -2,9 +2,10 @@
 import FreeCAD
 
 from .. import paths
+from ..objects.properties import ProxyBase
 
 
-class ViewProviderBase:
+class ViewProviderBase(ProxyBase):
     ICON = "FrameFix_Analyze"
 
     def __init__(self, vobj):
@@ -19,18 +20,6 @@ class ViewProviderBase:
 
     def getIcon(self):
         return paths.icon(self.ICON)
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
 
     def analysis(self):
         return getattr(self.Object, "Analysis", None) or self.Object
