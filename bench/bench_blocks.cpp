@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "framefix/blocks/blocks.h"
-#include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 
 #include "bench_common.h"
@@ -25,7 +24,7 @@ using bench::since;
 }  // namespace
 
 int main(int argc, char** argv) {
-    AnalysisOptions options;
+    RunOptions options;
     BlockOptions blocks;
     bool per_block = false;
     std::vector<std::string> samples;
@@ -42,20 +41,15 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: bench_blocks [--size H] [--tets N] [--threads T] [--blocks] SAMPLE...\n");
         return 2;
     }
+    options.stop_after = Stage::blocks;
     for (const std::string& name : samples) {
-        AnalysisResult r = analyze(resolve(name), options);
-        const double field_seconds = r.timings.field;
-        std::vector<SnappedPath> paths;
-        double correct_seconds = 0;
-        if (r.singularities.summary.curves_3_5 > 0) {
-            const auto t = Clock::now();
-            Correction c = correct(r, CorrectionOptions{}, options);
-            paths = c.snap.paths;
-            correct_seconds = since(t);
-        }
-        const BlockDecomposition d = build_blocks(r.mesh, r.topology, r.features, r.field, r.singularities, paths, blocks);
-        std::printf("%s: %d vertices %d tets h %.4f  curves %d paths %zu\n", name.c_str(), r.mesh.num_vertices(),
-                    r.mesh.num_tets(), d.h, r.singularities.summary.curves, paths.size());
+        options.blocks = blocks;
+        const RunResult r = run(RunInput::file(resolve(name)), options);
+        const BlockDecomposition& d = *r.blocks;
+        const size_t paths = r.correction ? r.correction->snap.paths.size() : 0;
+        const double field_seconds = r.timings.field, correct_seconds = r.timings.correct;
+        std::printf("%s: %d vertices %d tets h %.4f  curves %d paths %zu\n", name.c_str(), r.mesh->tets.num_vertices(),
+                    r.mesh->tets.num_tets(), d.h, r.singularities->summary.curves, paths);
         std::printf("  blocks %d valid %d conforming pairs %d/%d flat edges %d flat corners %d\n", d.count, d.valid,
                     d.conforming_pairs, d.pairs, d.flat_edges, d.flat_corners);
         const SheetStats& s = d.stats;

@@ -2,7 +2,7 @@
 // analyze -> snap the 3-5 curves -> re-solve on the same mesh -> extract, for each sample (a path,
 // or a name in samples/ such as "notch"); prints before/after summaries, the snapped curves, the
 // locality of the change and timings. With --passes 2 the corrected result is snapped again
-// (section 0: "re-run detection after the correction").
+// (a correction can leave 3-5 curves that a second pass removes).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -60,7 +60,7 @@ void print_snap(const SnapResult& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    AnalysisOptions options;
+    RunOptions options;
     SnapOptions snap;
     int passes = 1;
     std::vector<std::string> samples;
@@ -82,42 +82,45 @@ int main(int argc, char** argv) {
     for (const std::string& name : samples) {
         try {
             auto t0 = Clock::now();
-            const AnalysisResult r = analyze(resolve(name), options);
+            const RunResult r = run(RunInput::file(resolve(name)), options);
             const double t_analyze = since(t0);
+            const TetMesh& mesh = r.mesh->tets;
+            const TetTopology& topology = r.mesh->topology;
+            const FrameField& analysed = r.field->frames;
             std::printf("%s: %d vertices %d tets  analyze %.2f s (mesh %.2f field %.2f singularities %.2f)\n",
-                        name.c_str(), r.mesh.num_vertices(), r.mesh.num_tets(), t_analyze, r.timings.mesh,
+                        name.c_str(), mesh.num_vertices(), mesh.num_tets(), t_analyze, r.timings.mesh,
                         r.timings.field, r.timings.singularities);
-            print_summary("before", r.singularities);
+            print_summary("before", *r.singularities);
 
-            Constraints constraints = r.constraints;
-            FrameField field = r.field;
-            SingularityGraph graph = r.singularities;
-            std::vector<SnapRole> roles(r.mesh.num_vertices(), SnapRole::Untouched);
+            Constraints constraints = r.field->constraints;
+            FrameField field = analysed;
+            SingularityGraph graph = *r.singularities;
+            std::vector<SnapRole> roles(mesh.num_vertices(), SnapRole::Untouched);
             for (int pass = 1; pass <= passes && graph.summary.curves_3_5 > 0; ++pass) {
-                const SnapResult s = snap_three_five_curves(r.mesh, r.topology, r.features, constraints, field, graph, snap);
+                const SnapResult s = snap_three_five_curves(mesh, topology, r.mesh->features, constraints, field, graph, snap);
                 print_snap(s);
                 for (size_t v = 0; v < roles.size(); ++v)
                     if (s.vertex_role[v] != SnapRole::Untouched) roles[v] = s.vertex_role[v];
                 FieldOptions fo = options.field;
                 fo.threads = options.threads;
                 t0 = Clock::now();
-                field = solve_frame_field(r.mesh, r.topology, s.constraints, fo);
+                field = solve_frame_field(mesh, topology, s.constraints, fo);
                 const double t_solve = since(t0);
                 t0 = Clock::now();
-                graph = extract_singularities(r.mesh, r.topology, field, options.singularities);
+                graph = extract_singularities(mesh, topology, field, options.singularities);
                 const double t_extract = since(t0);
                 constraints = s.constraints;
                 print_summary(pass == 1 ? "after" : "after2", graph);
-                const Eigen::VectorXd deg = frame_rotation_degrees(r.field, field);
+                const Eigen::VectorXd deg = frame_rotation_degrees(analysed, field);
                 std::printf("  locality >5deg %.4f >10deg %.4f >20deg %.4f max %.1f deg; singular faces at snapped/freed "
                             "vertices %d\n",
-                            rotated_fraction(r.field, field, 5), rotated_fraction(r.field, field, 10),
-                            rotated_fraction(r.field, field, 20), deg.size() ? deg.maxCoeff() : 0.0,
-                            singular_faces_near(r.topology, graph, roles));
+                            rotated_fraction(analysed, field, 5), rotated_fraction(analysed, field, 10),
+                            rotated_fraction(analysed, field, 20), deg.size() ? deg.maxCoeff() : 0.0,
+                            singular_faces_near(topology, graph, roles));
                 std::printf("  timings snap %.3f s  re-solve %.2f s (%d iterations)  extract %.2f s\n", s.seconds,
                             t_solve, field.iterations, t_extract);
             }
-            if (r.singularities.summary.curves_3_5 == 0) std::printf("  no 3-5 curve: nothing to snap\n");
+            if (r.singularities->summary.curves_3_5 == 0) std::printf("  no 3-5 curve: nothing to snap\n");
         } catch (const Error& e) {
             std::printf("%s: error [%s]: %s\n", name.c_str(), e.stage().c_str(), e.message().c_str());
             ++failures;

@@ -1,17 +1,18 @@
-// framefix command line: parse flags -> AnalysisOptions -> pipeline -> files. Errors become exit
-// codes: 2 bad input or options (one line on stderr), 3 internal error. Never a stack trace.
+// framefix command line: parse flags -> RunOptions -> pipeline::run -> files. Each subcommand
+// only says where the run stops and what it writes. Errors become exit codes: 2 bad input or
+// options (one line on stderr), 3 internal error. Never a stack trace.
 #include <cstdio>
 #include <cstdlib>
 
 #include <unistd.h>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "framefix/core/error.h"
-#include "framefix/pipeline/block_stage.h"
-#include "framefix/pipeline/correction.h"
+#include "framefix/pipeline/correction_methods.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/pipeline/report.h"
 
@@ -22,7 +23,7 @@ struct Args {
     double size = 0, size_factor = 1;
     int threads = 0;
     bool quiet = false;
-    std::string method = "snap";
+    std::string method = framefix::correction_methods()[0].name;
 };
 
 void add_common(CLI::App* cmd, Args& a) {
@@ -35,8 +36,20 @@ void add_common(CLI::App* cmd, Args& a) {
     cmd->add_flag("--quiet", a.quiet, "no progress lines");
 }
 
-framefix::AnalysisOptions options_from(const Args& a) {
-    framefix::AnalysisOptions o;
+// "snap (default), fillet (not available yet), ..." from the registry.
+std::string method_help(bool with_none) {
+    std::string s;
+    for (const auto& m : framefix::correction_methods()) {
+        if (!s.empty()) s += ", ";
+        s += m.name + (s.empty() ? " (default)" : "") + (m.available ? "" : " (not available yet)");
+    }
+    return with_none ? s + ", or " + framefix::kNoCorrection + " (no correction)" : s;
+}
+
+framefix::RunOptions options_from(const Args& a, framefix::Stage stop_after) {
+    framefix::RunOptions o;
+    o.stop_after = stop_after;
+    o.correction = a.method;
     o.mesh.size = a.size;
     o.size_factor = a.size_factor;
     o.threads = a.threads;
@@ -45,34 +58,24 @@ framefix::AnalysisOptions options_from(const Args& a) {
     return o;
 }
 
-int finish(const framefix::AnalysisResult& r, const Args& a, const framefix::Correction* c = nullptr,
-           const framefix::BlockDecomposition* b = nullptr) {
+// One subcommand, start to finish; errors propagate to main's translation into exit codes.
+int run(const Args& a, framefix::Stage stop_after) {
+    if (stop_after == framefix::Stage::correction && a.method == framefix::kNoCorrection)
+        throw framefix::Error("correct", "method 'none' corrects nothing; use analyze, or --method snap");
+    const framefix::RunResult r = framefix::run(framefix::RunInput::file(a.part), options_from(a, stop_after));
     const std::string out = a.out.empty() ? "framefix-out" : a.out;
-    framefix::write_outputs(r, out, c, b);
-    std::cout << framefix::human_summary(r, c, b) << "\n";
+    framefix::write_outputs(r, out);
+    std::cout << framefix::human_summary(r) << "\n";
     std::cout << "results: " << out << "/report.json\n";
     return 0;
 }
 
-// One subcommand, start to finish; errors propagate to main's translation into exit codes.
-int run(const Args& a, const std::string& command) {
-    const auto o = options_from(a);
-    if (command == "mesh") return finish(framefix::mesh_part(a.part, o), a);
-    if (command == "analyze") return finish(framefix::analyze(a.part, o), a);
-    if (command == "blocks" && a.method == "none") {
-        auto r = framefix::analyze(a.part, o);
-        const auto b = framefix::decompose(r, nullptr, o);
-        return finish(r, a, nullptr, &b);
-    }
-    framefix::CorrectionOptions co;
-    co.method = a.method;
-    framefix::check_correction_method(co.method);  // refuse before the long analysis
-    auto r = framefix::analyze(a.part, o);
-    const auto c = framefix::correct(r, co, o);
-    if (command == "correct") return finish(r, a, &c);
-    const auto b = framefix::decompose(r, &c, o);
-    return finish(r, a, &c, &b);
-}
+struct Subcommand {
+    const char* name;
+    const char* help;
+    framefix::Stage stop_after;
+    CLI::App* app = nullptr;
+};
 
 }  // namespace
 
@@ -87,18 +90,20 @@ int main(int argc, char** argv) {
     CLI::App app{"FrameFix: frame fields, singular curves and 3-5 curves of CAD solids for hex meshing"};
     app.require_subcommand(1);
     Args a;
-    auto* mesh = app.add_subcommand("mesh", "load a part, classify feature curves, build the tet mesh");
-    auto* analyze = app.add_subcommand("analyze", "mesh, frame field, singular curves, 3-5 curves");
-    auto* correct = app.add_subcommand("correct", "analyze, then correct the 3-5 curves and analyze again");
-    add_common(mesh, a);
-    add_common(analyze, a);
-    add_common(correct, a);
-    correct->add_option("--method", a.method, "snap (default), fillet, extrude-curves, extrude-nodes")
-        ->check(CLI::IsMember({"snap", "fillet", "extrude-curves", "extrude-nodes"}));
-    auto* blocks = app.add_subcommand("blocks", "analyze, correct (snap), then cut the part into blocks");
-    add_common(blocks, a);
-    blocks->add_option("--method", a.method, "correction before the blocks: snap (default) or none")
-        ->check(CLI::IsMember({"snap", "none"}));
+    using framefix::Stage;
+    std::vector<Subcommand> commands = {
+        {"mesh", "load a part, classify feature curves, build the tet mesh", Stage::mesh},
+        {"analyze", "mesh, frame field, singular curves, 3-5 curves", Stage::singularities},
+        {"correct", "analyze, then correct the 3-5 curves and analyze again", Stage::correction},
+        {"blocks", "analyze, correct, then cut the part into blocks", Stage::blocks},
+    };
+    for (auto& c : commands) {
+        c.app = app.add_subcommand(c.name, c.help);
+        add_common(c.app, a);
+    }
+    commands[2].app->add_option("--method", a.method, method_help(false));
+    commands[3].app->add_option("--method", a.method, "correction before the blocks: " + method_help(true));
+    auto* info = app.add_subcommand("info", "print the defaults and the correction methods as JSON");
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -108,7 +113,13 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        return run(a, mesh->parsed() ? "mesh" : analyze->parsed() ? "analyze" : correct->parsed() ? "correct" : "blocks");
+        if (info->parsed()) {
+            std::cout << framefix::info_json() << "\n";
+            return 0;
+        }
+        for (const auto& c : commands)
+            if (c.app->parsed()) return run(a, c.stop_after);
+        return 2;  // unreachable: CLI11 requires one subcommand
     } catch (const framefix::Error& e) {
         std::cerr << "framefix: error [" << e.stage() << "]: " << e.message() << "\n";
         return 2;

@@ -16,6 +16,8 @@ FeatureSet feature_set(const std::vector<EdgeFeature>& edges) {
     return f;
 }
 
+}  // namespace
+
 py::dict summary_dict(const SingularitySummary& s) {
     py::dict d;
     d["curves"] = s.curves;
@@ -27,8 +29,6 @@ py::dict summary_dict(const SingularitySummary& s) {
     d["meshable"] = s.meshable;
     return d;
 }
-
-}  // namespace
 
 void bind_field(py::module_& m) {
     py::class_<FrameField>(m, "FrameField", "One frame per mesh vertex")

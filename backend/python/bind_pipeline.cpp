@@ -1,10 +1,11 @@
+// The pipeline in Python: one entry point, run(), whose result carries every stage it reached.
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
 #include "bindings.h"
-#include "framefix/pipeline/block_stage.h"
-#include "framefix/pipeline/correction.h"
+#include "framefix/core/error.h"
+#include "framefix/pipeline/correction_methods.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/pipeline/report.h"
 
@@ -13,128 +14,92 @@ namespace py = pybind11;
 namespace framefix::python {
 namespace {
 
-AnalysisOptions make_options(double size, double size_factor, int threads) {
-    AnalysisOptions o;
+Stage stage_named(const std::string& name) {
+    for (Stage s : {Stage::load, Stage::mesh, Stage::field, Stage::singularities, Stage::correction, Stage::blocks})
+        if (name == stage_name(s)) return s;
+    throw Error("options", "unknown stage '" + name + "'; use load, mesh, field, singularities, correct or blocks");
+}
+
+RunOptions make_options(const std::string& stop_after, const std::string& method, double size, double size_factor,
+                        int threads) {
+    RunOptions o;
+    o.stop_after = stage_named(stop_after);
+    o.correction = method;
     o.mesh.size = size;
     o.size_factor = size_factor;
     o.threads = threads;
     return o;
 }
 
+template <class T>
+py::object optional_of(const std::optional<T>& v) {
+    return v ? py::cast(*v) : py::none();
+}
+
+void bind_correction(py::module_& m) {
+    py::class_<Correction>(m, "Correction", "What a correction did; the run's field and graph are the corrected ones")
+        .def_readonly("method", &Correction::method)
+        .def_readonly("changed", &Correction::changed)
+        .def_readonly("rotated_fraction", &Correction::rotated_fraction, "vertices whose frame turned > 10 deg")
+        .def_readonly("graph_before", &Correction::graph_before)
+        .def_property_readonly("before", [](const Correction& c) { return summary_dict(c.before); })
+        .def_property_readonly("snapped_paths", [](const Correction& c) {
+            std::vector<Points> out;
+            for (const auto& p : c.snap.paths) out.push_back(p.points);
+            return out;
+        });
+}
+
+void bind_blocks(py::module_& m) {
+    py::class_<BlockDecomposition>(m, "Blocks", "The block decomposition and its validation")
+        .def_readonly("tet_block", &BlockDecomposition::tet_block, "#T block id per tet")
+        .def_readonly("count", &BlockDecomposition::count)
+        .def_readonly("valid", &BlockDecomposition::valid)
+        .def_readonly("conforming_pairs", &BlockDecomposition::conforming_pairs)
+        .def_readonly("pairs", &BlockDecomposition::pairs);
+}
+
+void bind_result(py::module_& m) {
+    py::class_<RunResult>(m, "Analysis", "Every stage a run reached (None for the others), plus its report")
+        .def_readonly("input_path", &RunResult::input_path)
+        .def_readonly("input_kind", &RunResult::input_kind)
+        .def_property_readonly("mesh", [](const RunResult& r) { return r.mesh ? py::cast(r.mesh->tets) : py::none(); })
+        .def_property_readonly("features", [](const RunResult& r) {
+            return r.mesh ? r.mesh->features.edges : std::vector<EdgeFeature>{};
+        })
+        .def_property_readonly("field", [](const RunResult& r) { return r.field ? py::cast(r.field->frames) : py::none(); })
+        .def_property_readonly("singularities", [](const RunResult& r) { return optional_of(r.singularities); })
+        .def_property_readonly("correction", [](const RunResult& r) { return optional_of(r.correction); })
+        .def_property_readonly("blocks", [](const RunResult& r) { return optional_of(r.blocks); })
+        .def_property_readonly("report_json", [](const RunResult& r) { return report_json(r); })
+        .def("write_outputs", [](const RunResult& r, const std::string& dir) { return write_outputs(r, dir); },
+             py::arg("folder"))
+        .def_property_readonly("human_summary", [](const RunResult& r) { return human_summary(r); });
+}
+
 }  // namespace
 
 void bind_pipeline(py::module_& m) {
-    py::class_<AnalysisResult>(m, "Analysis", "Every intermediate of a run, plus its report")
-        .def_readonly("input_path", &AnalysisResult::input_path)
-        .def_readonly("input_kind", &AnalysisResult::input_kind)
-        .def_readonly("mesh", &AnalysisResult::mesh)
-        .def_property_readonly("features", [](const AnalysisResult& r) { return r.features.edges; })
-        .def_property_readonly("field", [](const AnalysisResult& r) -> py::object {
-            return r.has_field ? py::cast(r.field) : py::none();
-        })
-        .def_property_readonly("singularities", [](const AnalysisResult& r) -> py::object {
-            return r.has_singularities ? py::cast(r.singularities) : py::none();
-        })
-        .def_property_readonly("report_json", [](const AnalysisResult& r) { return report_json(r); })
-        .def("write_outputs", [](const AnalysisResult& r, const std::string& dir) { return write_outputs(r, dir); },
-             py::arg("folder"))
-        .def_property_readonly("human_summary", [](const AnalysisResult& r) { return human_summary(r); });
-
-    // A corrected analysis: the corrected result plus what the correction did.
-    struct Corrected {
-        AnalysisResult result;
-        Correction correction;
-    };
-    py::class_<Corrected>(m, "Corrected", "A corrected analysis (result = after, correction = what changed)")
-        .def_readonly("result", &Corrected::result)
-        .def_property_readonly("method", [](const Corrected& c) { return c.correction.method; })
-        .def_property_readonly("snapped_paths", [](const Corrected& c) {
-            std::vector<Points> out;
-            for (const auto& p : c.correction.snap.paths) out.push_back(p.points);
-            return out;
-        })
-        .def_property_readonly("rotated_fraction", [](const Corrected& c) { return c.correction.rotated_fraction; })
-        .def_property_readonly("report_json", [](const Corrected& c) { return report_json(c.result, &c.correction); })
-        .def("write_outputs",
-             [](const Corrected& c, const std::string& dir) { return write_outputs(c.result, dir, &c.correction); },
-             py::arg("folder"))
-        .def_property_readonly("human_summary", [](const Corrected& c) { return human_summary(c.result, &c.correction); });
-    // Analysis, correction and blocks of one part.
-    struct BlockRun {
-        AnalysisResult result;
-        Correction correction;
-        bool corrected = false;
-        BlockDecomposition blocks;
-    };
-    py::class_<BlockRun>(m, "BlockRun", "A block decomposition (result = analysed and corrected part)")
-        .def_readonly("result", &BlockRun::result)
-        .def_property_readonly("tet_block", [](const BlockRun& b) { return b.blocks.tet_block; }, "#T block id per tet")
-        .def_property_readonly("count", [](const BlockRun& b) { return b.blocks.count; })
-        .def_property_readonly("valid", [](const BlockRun& b) { return b.blocks.valid; })
-        .def_property_readonly("report_json", [](const BlockRun& b) {
-            return report_json(b.result, b.corrected ? &b.correction : nullptr, &b.blocks);
-        })
-        .def("write_outputs",
-             [](const BlockRun& b, const std::string& dir) {
-                 return write_outputs(b.result, dir, b.corrected ? &b.correction : nullptr, &b.blocks);
-             },
-             py::arg("folder"))
-        .def_property_readonly("human_summary", [](const BlockRun& b) {
-            return human_summary(b.result, b.corrected ? &b.correction : nullptr, &b.blocks);
-        });
+    bind_correction(m);
+    bind_blocks(m);
+    bind_result(m);
     m.def(
-        "blocks_file",
-        [](const std::string& path, const std::string& method, double size, double size_factor, int threads) {
-            const auto o = make_options(size, size_factor, threads);
-            BlockRun b{analyze(path, o), {}, method != "none", {}};
-            if (b.corrected) {
-                CorrectionOptions co;
-                co.method = method;
-                b.correction = correct(b.result, co, o);
-            }
-            b.blocks = decompose(b.result, b.corrected ? &b.correction : nullptr, o);
-            return b;
+        "run_file",
+        [](const std::string& path, const std::string& stop_after, const std::string& method, double size,
+           double size_factor, int threads) {
+            return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads));
         },
-        py::arg("path"), py::arg("method") = "snap", py::arg("size") = 0.0, py::arg("size_factor") = 1.0,
-        py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
+        py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "snap", py::arg("size") = 0.0,
+        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
     m.def(
-        "correct_file",
-        [](const std::string& path, const std::string& method, double size, double size_factor, int threads) {
-            check_correction_method(method);
-            const auto o = make_options(size, size_factor, threads);
-            Corrected c{analyze(path, o), {}};
-            CorrectionOptions co;
-            co.method = method;
-            c.correction = correct(c.result, co, o);
-            return c;
+        "run_shape",
+        [](const BrepModel& shape, const std::string& stop_after, const std::string& method, double size,
+           double size_factor, int threads) {
+            return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads));
         },
-        py::arg("path"), py::arg("method") = "snap", py::arg("size") = 0.0, py::arg("size_factor") = 1.0,
-        py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
-
-    m.def(
-        "mesh_part",
-        [](const std::string& path, double size, double size_factor, int threads) {
-            return mesh_part(path, make_options(size, size_factor, threads));
-        },
-        py::arg("path"), py::arg("size") = 0.0, py::arg("size_factor") = 1.0, py::arg("threads") = 0,
-        py::call_guard<py::gil_scoped_release>());
-    m.def(
-        "analyze_file",
-        [](const std::string& path, double size, double size_factor, int threads) {
-            return analyze(path, make_options(size, size_factor, threads));
-        },
-        py::arg("path"), py::arg("size") = 0.0, py::arg("size_factor") = 1.0, py::arg("threads") = 0,
-        py::call_guard<py::gil_scoped_release>());
-    m.def(
-        "analyze_shape",
-        [](const BrepModel& shape, double size, double size_factor, int threads) {
-            const auto o = make_options(size, size_factor, threads);
-            AnalysisResult r = mesh_model(shape, o);
-            analyze_mesh(r, o);
-            return r;
-        },
-        py::arg("shape"), py::arg("size") = 0.0, py::arg("size_factor") = 1.0, py::arg("threads") = 0,
-        py::call_guard<py::gil_scoped_release>());
+        py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "snap", py::arg("size") = 0.0,
+        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
+    m.def("info_json", &info_json, "`framefix info`: defaults and correction methods, as JSON text");
 }
 
 }  // namespace framefix::python

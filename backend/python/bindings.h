@@ -1,7 +1,14 @@
 #pragma once
 #include <pybind11/pybind11.h>
 
+namespace framefix {
+struct SingularitySummary;
+}
+
 namespace framefix::python {
+
+// The summary of a singularity graph as report.json writes it.
+pybind11::dict summary_dict(const SingularitySummary& summary);
 
 void bind_errors(pybind11::module_& m);
 void bind_brep(pybind11::module_& m);

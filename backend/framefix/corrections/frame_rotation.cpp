@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include <omp.h>
+
 #include "framefix/core/error.h"
 #include "framefix/corrections/snapping.h"
 #include "framefix/frame_field/projection.h"
@@ -19,13 +21,13 @@ Eigen::Matrix3d rotation_of(const FrameField& f, int v) {
 
 }  // namespace
 
-Eigen::VectorXd frame_rotation_degrees(const FrameField& before, const FrameField& after) {
+Eigen::VectorXd frame_rotation_degrees(const FrameField& before, const FrameField& after, int threads) {
     const int nv = int(before.axes.rows());
     if (after.axes.rows() != nv)
         throw Error("snap", "cannot compare fields with " + std::to_string(nv) + " and " +
                                 std::to_string(after.axes.rows()) + " vertices; they must share the mesh");
     Eigen::VectorXd degrees(nv);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
     for (int v = 0; v < nv; ++v) {
         const Eigen::Matrix3d Ra = rotation_of(before, v);
         // match_frame picks the cube-group representative of `after` closest to `before`.
@@ -36,8 +38,8 @@ Eigen::VectorXd frame_rotation_degrees(const FrameField& before, const FrameFiel
     return degrees;
 }
 
-double rotated_fraction(const FrameField& before, const FrameField& after, double threshold_deg) {
-    const Eigen::VectorXd degrees = frame_rotation_degrees(before, after);
+double rotated_fraction(const FrameField& before, const FrameField& after, double threshold_deg, int threads) {
+    const Eigen::VectorXd degrees = frame_rotation_degrees(before, after, threads);
     if (degrees.size() == 0) return 0;
     return double((degrees.array() > threshold_deg).count()) / double(degrees.size());
 }

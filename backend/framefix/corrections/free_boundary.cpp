@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include <omp.h>
+
 namespace framefix {
 
 double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
@@ -13,7 +15,8 @@ double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a
 }
 
 std::vector<int> vertices_near_paths(const Points& points, const std::vector<int>& candidates,
-                                     const std::vector<std::vector<int>>& paths, double radius) {
+                                     const std::vector<std::vector<int>>& paths, double radius,
+                                     int threads) {
     struct Segment {
         Eigen::Vector3d a, b, lo, hi;  // end points and their box grown by the radius
     };
@@ -29,7 +32,7 @@ std::vector<int> vertices_near_paths(const Points& points, const std::vector<int
     }
     std::vector<char> near(candidates.size(), 0);
     // A few thousand segments against the boundary vertices: the box test makes brute force cheap.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : omp_get_max_threads())
     for (int i = 0; i < int(candidates.size()); ++i) {
         const Eigen::Vector3d p = points.row(candidates[i]);
         for (const Segment& s : segments) {

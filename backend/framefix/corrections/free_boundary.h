@@ -14,7 +14,8 @@ namespace framefix {
 // Vertices of `candidates` within `radius` of any segment of any polyline (paths of vertex ids
 // into `points`; a one-vertex path is a point). Ascending, without duplicates.
 std::vector<int> vertices_near_paths(const Points& points, const std::vector<int>& candidates,
-                                     const std::vector<std::vector<int>>& paths, double radius);
+                                     const std::vector<std::vector<int>>& paths, double radius,
+                                     int threads = 0);
 
 // Distance from p to segment [a, b].
 double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b);

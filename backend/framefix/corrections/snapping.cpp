@@ -125,7 +125,7 @@ void free_near_paths(const TetMesh& mesh, const BoundaryGraph& boundary, const C
         if (r.constraints.kind[v] == ConstraintKind::NormalAligned) candidates.push_back(v);
     std::vector<std::vector<int>> polylines;
     for (const SnappedPath& p : r.paths) polylines.push_back(p.vertices);
-    for (int v : vertices_near_paths(mesh.points, candidates, polylines, options.free_radius_hb * boundary.hb)) {
+    for (int v : vertices_near_paths(mesh.points, candidates, polylines, options.free_radius_hb * boundary.hb, options.threads)) {
         r.constraints.kind[v] = ConstraintKind::Free;
         r.vertex_role[v] = SnapRole::Freed;
     }

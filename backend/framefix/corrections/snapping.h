@@ -41,6 +41,7 @@ struct SnapOptions {
     // Re-interpolate the Dirichlet frames of feature curves that received a snapped end point
     // between their anchors (paper). Off by default: same singularities, more local change.
     bool interpolate_split_curves = false;
+    int threads = 0;  // OpenMP threads, 0 = all
 };
 
 // Roles of vertices after snapping (SnapResult::vertex_role).
@@ -84,8 +85,8 @@ SnapResult snap_three_five_curves(const TetMesh& mesh, const TetTopology& topo, 
 
 // Locality of a correction: per-vertex angle (degrees, 0..~63) between the frames of two fields on
 // the same mesh, modulo the cube group (the smallest rotation taking one frame to the other).
-Eigen::VectorXd frame_rotation_degrees(const FrameField& before, const FrameField& after);
+Eigen::VectorXd frame_rotation_degrees(const FrameField& before, const FrameField& after, int threads = 0);
 // Fraction of the vertices whose frame turned by more than `threshold_deg`.
-double rotated_fraction(const FrameField& before, const FrameField& after, double threshold_deg = 10);
+double rotated_fraction(const FrameField& before, const FrameField& after, double threshold_deg = 10, int threads = 0);
 
 }  // namespace framefix

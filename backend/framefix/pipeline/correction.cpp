@@ -1,50 +1,40 @@
-#include "framefix/pipeline/correction.h"
-
+// The correction stage: a registered method changes the set-up, then field and graph are
+// solved again on it. Progress: correct 0 -> 0.1 method, 0.1 -> 0.9 re-solve, then the graph.
 #include <chrono>
 
-#include "framefix/core/error.h"
-#include "framefix/core/memory.h"
+#include "framefix/pipeline/correction_methods.h"
+#include "framefix/pipeline/solve_stages.h"
 
-namespace framefix {
+namespace framefix::detail {
+namespace {
 
-bool correction_available(const std::string& method) { return method == "snap"; }
+constexpr double kRotationThresholdDeg = 10;  // "frames turned" in the report counts above this
 
-void check_correction_method(const std::string& method) {
-    const bool known = method == "snap" || method == "fillet" || method == "extrude-curves" || method == "extrude-nodes";
-    if (!known) throw Error("correct", "unknown method '" + method + "'; use snap, fillet, extrude-curves or extrude-nodes");
-    if (!correction_available(method))
-        throw Error("correct", "method '" + method + "' is not available yet; use --method snap (the paper's recommendation)");
-}
+}  // namespace
 
-Correction correct(AnalysisResult& r, const CorrectionOptions& options, const AnalysisOptions& analysis) {
-    check_correction_method(options.method);
-    if (!r.has_singularities) throw InternalError("correct: analyse before correcting");
-
+Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options) {
+    const CorrectionMethod& method = find_correction_method(options.correction);
     const auto t0 = std::chrono::steady_clock::now();
     Correction c;
-    c.method = options.method;
-    c.before = r.singularities.summary;
-    report(analysis.progress, "correct", 0.0);
-    c.snap = snap_three_five_curves(r.mesh, r.topology, r.features, r.constraints, r.field, r.singularities, options.snap);
-    c.graph_before = r.singularities;
-    c.field_before = r.field;
-    if (!c.snap.snapped_curve_ids.empty()) {
-        r.constraints = c.snap.constraints;
-        FieldOptions fo = analysis.field;
-        if (fo.threads == 0) fo.threads = analysis.threads;
-        report(analysis.progress, "correct", 0.1);
-        r.field = solve_frame_field(r.mesh, r.topology, r.constraints, fo);
-        report(analysis.progress, "correct", 0.9);
-        SingularityOptions so = analysis.singularities;
-        if (so.threads == 0) so.threads = analysis.threads;
-        r.singularities = extract_singularities(r.mesh, r.topology, r.field, so);
-        c.rotated_fraction = rotated_fraction(c.field_before, r.field, 10);
+    c.method = method.name;
+    c.before = graph.summary;
+    report(options.progress, "correct", 0.0);
+    CorrectionContext context{options, mesh, field, graph, c};
+    c.changed = method.apply(context);
+    c.graph_before = graph;
+    c.field_before = field.frames;
+    if (c.changed) {
+        report(options.progress, "correct", 0.1);
+        const ProgressSink& sink = options.progress;
+        const ProgressSink inner = [&sink](const std::string&, double f) { report(sink, "correct", 0.1 + 0.8 * f); };
+        field = solve_field(mesh, std::move(field.constraints), options, sink ? inner : ProgressSink{});
+        report(options.progress, "correct", 0.9);
+        graph = find_singularities(mesh, field, options);
+        c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
     }
-    report(analysis.progress, "correct", 1.0);
+    report(options.progress, "correct", 1.0);
     c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.timings.total += c.seconds;
-    r.peak_memory_mb = peak_memory_mb();
     return c;
 }
 
-}  // namespace framefix
+}  // namespace framefix::detail

@@ -12,8 +12,8 @@ constexpr int kVtkLine = 3, kVtkPolyline = 4, kVtkTriangle = 5, kVtkTet = 10, kV
 
 // Tets, boundary triangles and feature edges in one grid, told apart by "cell_kind"
 // (0 tet, 1 boundary triangle, 2 feature edge); the field as point data.
-VtkGrid mesh_grid(const AnalysisResult& r) {
-    const TetMesh& m = r.mesh;
+VtkGrid mesh_grid(const RunResult& r) {
+    const TetMesh& m = r.mesh->tets;
     VtkGrid g;
     g.points = m.points;
     VtkArray kind{"cell_kind", 1, {}}, face{"face_tag", 1, {}}, edge{"edge_tag", 1, {}}, val{"edge_valence", 1, {}};
@@ -23,7 +23,7 @@ VtkGrid mesh_grid(const AnalysisResult& r) {
         kind.data.push_back(k);
         face.data.push_back(f);
         edge.data.push_back(e);
-        val.data.push_back(e > 0 ? r.features.valence_of(e) : 0);
+        val.data.push_back(e > 0 ? r.mesh->features.valence_of(e) : 0);
     };
     for (int t = 0; t < m.num_tets(); ++t) add({m.tets(t, 0), m.tets(t, 1), m.tets(t, 2), m.tets(t, 3)}, kVtkTet, 0, 0, 0);
     for (int b = 0; b < m.boundary_faces.rows(); ++b)
@@ -31,8 +31,8 @@ VtkGrid mesh_grid(const AnalysisResult& r) {
     for (int s = 0; s < m.feature_edges.rows(); ++s)
         add({m.feature_edges(s, 0), m.feature_edges(s, 1)}, kVtkLine, 2, 0, m.edge_tags(s));
     g.cell_data = {kind, face, edge, val};
-    if (r.has_field) {
-        const FrameField& f = r.field;
+    if (r.field) {
+        const FrameField& f = r.field->frames;
         VtkArray q{"frame_coefficients", 9, std::vector<double>(f.coefficients.data(), f.coefficients.data() + f.coefficients.size())};
         VtkArray d{"distance_to_manifold", 1, std::vector<double>(f.distance.data(), f.distance.data() + f.distance.size())};
         VtkArray c{"constraint_kind", 1, {}};
@@ -138,36 +138,37 @@ VtkGrid sheets_grid(const SheetSoup& s) {
 
 }  // namespace
 
-std::vector<std::string> write_outputs(const AnalysisResult& r, const std::string& dir, const Correction* correction,
-                                       const BlockDecomposition* blocks) {
+std::vector<std::string> write_outputs(const RunResult& r, const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw Error("output", "cannot create folder " + dir + ": " + ec.message());
     std::vector<std::string> written;
     const auto path = [&](const char* name) { return (std::filesystem::path(dir) / name).string(); };
 
-    write_vtk(mesh_grid(r), path("mesh.vtk"), "FrameFix tet mesh, tags and frame field");
-    written.push_back(path("mesh.vtk"));
-    if (r.has_singularities) {
-        write_vtk(curves_grid(r.singularities), path("singular_curves.vtk"), "FrameFix singular curves (kind: 0 valence3, 1 valence5, 2 3-5)");
-        write_vtk(nodes_grid(r.singularities), path("singular_nodes.vtk"), "FrameFix singular nodes");
+    if (r.mesh) {
+        write_vtk(mesh_grid(r), path("mesh.vtk"), "FrameFix tet mesh, tags and frame field");
+        written.push_back(path("mesh.vtk"));
+    }
+    if (r.singularities) {
+        write_vtk(curves_grid(*r.singularities), path("singular_curves.vtk"), "FrameFix singular curves (kind: 0 valence3, 1 valence5, 2 3-5)");
+        write_vtk(nodes_grid(*r.singularities), path("singular_nodes.vtk"), "FrameFix singular nodes");
         written.push_back(path("singular_curves.vtk"));
         written.push_back(path("singular_nodes.vtk"));
     }
-    if (correction) {
+    if (const auto& correction = r.correction) {
         write_vtk(curves_grid(correction->graph_before), path("singular_curves_before.vtk"), "FrameFix singular curves before correction");
         write_vtk(paths_grid(correction->snap), path("snapped_curves.vtk"), "FrameFix snapped curves (boundary paths)");
         written.push_back(path("singular_curves_before.vtk"));
         written.push_back(path("snapped_curves.vtk"));
     }
-    if (blocks) {
-        write_vtk(blocks_grid(r.mesh, *blocks), path("blocks.vtk"), "FrameFix blocks (tets labelled by block)");
+    if (const auto& blocks = r.blocks) {
+        write_vtk(blocks_grid(r.mesh->tets, *blocks), path("blocks.vtk"), "FrameFix blocks (tets labelled by block)");
         write_vtk(sheets_grid(blocks->sheets), path("sheets.vtk"), "FrameFix separatrix sheets");
         written.push_back(path("blocks.vtk"));
         written.push_back(path("sheets.vtk"));
     }
     std::ofstream out(path("report.json"));
-    out << report_json(r, correction, blocks) << '\n';
+    out << report_json(r) << '\n';
     if (!out) throw Error("output", "cannot write " + path("report.json"));
     written.push_back(path("report.json"));
     return written;

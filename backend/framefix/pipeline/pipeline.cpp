@@ -4,26 +4,104 @@
 #include <cctype>
 #include <chrono>
 
-#include <omp.h>
-
 #include "framefix/core/error.h"
 #include "framefix/core/memory.h"
 #include "framefix/mesh/crease_features.h"
 #include "framefix/mesh/mesh_io.h"
+#include "framefix/pipeline/correction_methods.h"
+#include "framefix/pipeline/solve_stages.h"
 #include "framefix/tetgen/tetrahedralize.h"
 
 namespace framefix {
 namespace {
 
-double since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+bool is_tet_mesh(const std::string& kind) { return kind == "msh" || kind == "mesh"; }
+
+// Throws before any work when the run would reach an unknown or unavailable correction.
+void check_options(const RunOptions& o) {
+    if (o.stop_after >= Stage::correction && o.correction != kNoCorrection) find_correction_method(o.correction);
 }
 
-void set_threads(int threads) {
-    if (threads > 0) omp_set_num_threads(threads);
+// load: the B-rep of a CAD file (or the given model), or the tets of a mesh file.
+std::optional<TetMesh> load(const RunInput& in, const RunOptions& o, RunResult& r) {
+    report(o.progress, "load", 0.0);
+    std::optional<TetMesh> tets;
+    if (in.model) {
+        r.model = in.model;
+    } else if (is_tet_mesh(input_kind(in.path))) {
+        tets = read_tet_mesh(in.path);
+    } else {
+        r.model = std::make_shared<const BrepModel>(load_shape(in.path));
+    }
+    r.input_path = r.model ? r.model->path : in.path;
+    r.input_kind = r.model ? r.model->kind : input_kind(in.path);
+    report(o.progress, "load", 1.0);
+    return tets;
+}
+
+// mesh: feature curves and tets; from the B-rep, or the crease edges of a tet mesh.
+MeshStage mesh(const RunResult& r, std::optional<TetMesh> tets, const RunOptions& o) {
+    report(o.progress, "mesh", 0.0);
+    MeshStage m;
+    if (tets) {
+        CreaseFeatures cf = detect_crease_features(std::move(*tets));
+        m.tets = std::move(cf.mesh);
+        m.features = std::move(cf.features);
+    } else {
+        m.features = classify_features(*r.model, o.features);
+        MeshOptions mo = o.mesh;
+        if (mo.size <= 0) mo.size = default_size(*r.model, mo.target_tets) * o.size_factor;
+        const SurfaceMesh surface = tessellate(*r.model, m.features, mo);
+        report(o.progress, "mesh", 0.3);
+        m.tets = tetrahedralize(surface, mo);
+    }
+    m.topology = build_topology(m.tets);
+    report(o.progress, "mesh", 1.0);
+    return m;
+}
+
+BlockDecomposition blocks(const RunResult& r, const RunOptions& o) {
+    report(o.progress, "blocks", 0.0);
+    BlockOptions bo = o.blocks;
+    if (bo.threads == 0) bo.threads = o.threads;
+    static const std::vector<SnappedPath> no_paths;
+    const auto& paths = r.correction ? r.correction->snap.paths : no_paths;
+    BlockDecomposition b =
+        build_blocks(r.mesh->tets, r.mesh->topology, r.mesh->features, r.field->frames, *r.singularities, paths, bo);
+    report(o.progress, "blocks", 1.0);
+    return b;
+}
+
+// Times one stage into `seconds` and the run's total.
+template <class F>
+void timed(double& seconds, Timings& t, F&& stage) {
+    const auto t0 = Clock::now();
+    stage();
+    seconds = since(t0);
+    t.total += seconds;
 }
 
 }  // namespace
+
+const char* stage_name(Stage stage) {
+    switch (stage) {
+        case Stage::load: return "load";
+        case Stage::mesh: return "mesh";
+        case Stage::field: return "field";
+        case Stage::singularities: return "singularities";
+        case Stage::correction: return "correct";
+        case Stage::blocks: return "blocks";
+    }
+    return "?";
+}
+
+RunInput RunInput::file(std::string path) { return {std::move(path), nullptr}; }
+
+RunInput RunInput::shape(const BrepModel& model) { return {model.path, std::make_shared<const BrepModel>(model)}; }
 
 std::string input_kind(const std::string& path) {
     const auto dot = path.find_last_of('.');
@@ -37,82 +115,37 @@ std::string input_kind(const std::string& path) {
     throw Error("load", "'" + path + "' has an unknown extension; give a .step, .stp, .brep, .iges, .igs, .msh or .mesh file");
 }
 
-AnalysisResult mesh_model(const BrepModel& model, const AnalysisOptions& options) {
-    set_threads(options.threads);
-    const auto t0 = std::chrono::steady_clock::now();
-    AnalysisResult r;
-    r.input_path = model.path;
-    r.input_kind = model.kind;
-    r.model = std::make_shared<BrepModel>(model);
-    report(options.progress, "mesh", 0.0);
-    r.features = classify_features(model, options.features);
-    MeshOptions mo = options.mesh;
-    if (mo.size <= 0) mo.size = default_size(model, mo.target_tets) * options.size_factor;
-    const SurfaceMesh surface = tessellate(model, r.features, mo);
-    report(options.progress, "mesh", 0.3);
-    r.mesh = tetrahedralize(surface, mo);
-    r.topology = build_topology(r.mesh);
-    report(options.progress, "mesh", 1.0);
-    r.timings.mesh = since(t0);
-    r.timings.total = r.timings.mesh;
-    r.peak_memory_mb = peak_memory_mb();
-    return r;
-}
-
-AnalysisResult mesh_part(const std::string& path, const AnalysisOptions& options) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::string kind = input_kind(path);
-    report(options.progress, "load", 0.0);
-    AnalysisResult r;
-    if (kind == "msh" || kind == "mesh") {
-        CreaseFeatures cf = detect_crease_features(read_tet_mesh(path));
-        r.mesh = std::move(cf.mesh);
-        r.features = std::move(cf.features);
-        r.topology = build_topology(r.mesh);
-        r.input_path = path;
-        r.input_kind = kind;
-        r.timings.load = since(t0);
-    } else {
-        const BrepModel model = load_shape(path);
-        const double load_s = since(t0);
-        report(options.progress, "load", 1.0);
-        r = mesh_model(model, options);
-        r.timings.load = load_s;
-    }
-    report(options.progress, "load", 1.0);
-    r.timings.total = since(t0);
-    r.peak_memory_mb = peak_memory_mb();
-    return r;
-}
-
-void analyze_mesh(AnalysisResult& r, const AnalysisOptions& options) {
-    set_threads(options.threads);
-    auto t0 = std::chrono::steady_clock::now();
-    report(options.progress, "field", 0.0);
-    r.constraints = boundary_constraints(r.mesh, r.topology, r.features);
-    FieldOptions fo = options.field;
-    if (!fo.progress) fo.progress = options.progress;
-    if (fo.threads == 0) fo.threads = options.threads;
-    r.field = solve_frame_field(r.mesh, r.topology, r.constraints, fo);
-    r.has_field = true;
-    report(options.progress, "field", 1.0);
-    r.timings.field = since(t0);
-
-    t0 = std::chrono::steady_clock::now();
-    report(options.progress, "singularities", 0.0);
-    SingularityOptions so = options.singularities;
-    if (so.threads == 0) so.threads = options.threads;
-    r.singularities = extract_singularities(r.mesh, r.topology, r.field, so);
-    r.has_singularities = true;
-    report(options.progress, "singularities", 1.0);
-    r.timings.singularities = since(t0);
-    r.timings.total += r.timings.field + r.timings.singularities;
-    r.peak_memory_mb = peak_memory_mb();
-}
-
-AnalysisResult analyze(const std::string& path, const AnalysisOptions& options) {
-    AnalysisResult r = mesh_part(path, options);
-    analyze_mesh(r, options);
+RunResult run(const RunInput& input, const RunOptions& o) {
+    check_options(o);
+    RunResult r;
+    Timings& t = r.timings;
+    std::optional<TetMesh> tets;
+    timed(t.load, t, [&] { tets = load(input, o, r); });
+    const auto done = [&](Stage s) {
+        r.peak_memory_mb = peak_memory_mb();
+        return o.stop_after == s;
+    };
+    if (done(Stage::load)) return r;
+    timed(t.mesh, t, [&] { r.mesh = mesh(r, std::move(tets), o); });
+    if (done(Stage::mesh)) return r;
+    timed(t.field, t, [&] {
+        report(o.progress, "field", 0.0);
+        r.field = detail::solve_field(*r.mesh, boundary_constraints(r.mesh->tets, r.mesh->topology, r.mesh->features), o,
+                                      o.progress);
+        report(o.progress, "field", 1.0);
+    });
+    if (done(Stage::field)) return r;
+    timed(t.singularities, t, [&] {
+        report(o.progress, "singularities", 0.0);
+        r.singularities = detail::find_singularities(*r.mesh, *r.field, o);
+        report(o.progress, "singularities", 1.0);
+    });
+    if (done(Stage::singularities)) return r;
+    if (o.correction != kNoCorrection)
+        timed(t.correct, t, [&] { r.correction = detail::correct(*r.mesh, *r.field, *r.singularities, o); });
+    if (done(Stage::correction)) return r;
+    timed(t.blocks, t, [&] { r.blocks = blocks(r, o); });
+    done(Stage::blocks);
     return r;
 }
 

@@ -49,19 +49,19 @@ json singularities_json(const SingularityGraph& g) {
     return {{"curves", curves}, {"nodes", nodes}, {"summary", summary_json(g.summary)}};
 }
 
-void add_features(json& j, const AnalysisResult& r) {
-    const auto by = r.features.by_valence();
+void add_features(json& j, const MeshStage& m) {
+    const auto by = m.features.by_valence();
     json curves = json::array();
-    for (const auto& pl : feature_polylines(r.mesh)) {
+    for (const auto& pl : feature_polylines(m.tets)) {
         json pts = json::array();
-        for (int v : pl.vertices) pts.push_back(point(r.mesh.points.row(v).transpose()));
-        curves.push_back({{"edge", pl.edge}, {"valence", r.features.valence_of(pl.edge)}, {"points", pts}});
+        for (int v : pl.vertices) pts.push_back(point(m.tets.points.row(v).transpose()));
+        curves.push_back({{"edge", pl.edge}, {"valence", m.features.valence_of(pl.edge)}, {"points", pts}});
     }
     json varying = json::array();
-    for (const auto& e : r.features.edges)
+    for (const auto& e : m.features.edges)
         if (e.valence_varies)
             varying.push_back({{"edge", e.edge}, {"angle_min_deg", e.angle_min_deg}, {"angle_max_deg", e.angle_max_deg}});
-    j["features"] = {{"curves", r.features.curves()},
+    j["features"] = {{"curves", m.features.curves()},
                      {"by_valence", {{"1", by[1]}, {"2", by[2]}, {"3", by[3]}, {"4", by[4]}}},
                      {"valence_varies", varying}};
     j["feature_curves"] = curves;
@@ -110,69 +110,38 @@ json blocks_json(const BlockDecomposition& b) {
                          {"validation", b.seconds_validation}, {"total", b.seconds}}}};
 }
 
+json timings_json(const RunResult& r) {
+    json t = {{"load", r.timings.load}, {"total", r.timings.total}};
+    if (r.mesh) t["mesh"] = r.timings.mesh;
+    if (r.field) t["field"] = r.timings.field;
+    if (r.singularities) t["singularities"] = r.timings.singularities;
+    if (r.correction) t["correct"] = r.timings.correct;
+    if (r.blocks) t["blocks"] = r.timings.blocks;
+    return t;
+}
+
 }  // namespace
 
-std::string report_json(const AnalysisResult& r, const Correction* correction, const BlockDecomposition* blocks) {
+std::string report_json(const RunResult& r) {
     json j;
     j["version"] = 1;
     j["input"] = {{"path", r.input_path}, {"kind", r.input_kind}};
-    j["mesh"] = {{"vertices", r.mesh.num_vertices()}, {"tets", r.mesh.num_tets()}, {"size", r.mesh.size}};
-    add_features(j, r);
-    if (r.has_field)
-        j["field"] = {{"energy", r.field.energy},
-                      {"initial_energy", r.field.initial_energy},
-                      {"iterations", r.field.iterations},
-                      {"solver", r.field.solver}};
-    if (r.has_singularities) j["singularities"] = singularities_json(r.singularities);
-    if (correction) j["correction"] = correction_json(*correction, r.singularities.summary);
-    if (blocks) j["blocks"] = blocks_json(*blocks);
-    json t = {{"load", r.timings.load}, {"mesh", r.timings.mesh}, {"total", r.timings.total}};
-    if (r.has_field) t["field"] = r.timings.field;
-    if (r.has_singularities) t["singularities"] = r.timings.singularities;
-    if (correction) t["correct"] = correction->seconds;
-    if (blocks) t["blocks"] = blocks->seconds;
-    j["timings_s"] = t;
+    if (r.mesh) {
+        const TetMesh& m = r.mesh->tets;
+        j["mesh"] = {{"vertices", m.num_vertices()}, {"tets", m.num_tets()}, {"size", m.size}};
+        add_features(j, *r.mesh);
+    }
+    if (r.field) {
+        const FrameField& f = r.field->frames;
+        j["field"] = {{"energy", f.energy}, {"initial_energy", f.initial_energy}, {"iterations", f.iterations},
+                      {"solver", f.solver}};
+    }
+    if (r.singularities) j["singularities"] = singularities_json(*r.singularities);
+    if (r.correction) j["correction"] = correction_json(*r.correction, r.singularities->summary);
+    if (r.blocks) j["blocks"] = blocks_json(*r.blocks);
+    j["timings_s"] = timings_json(r);
     j["peak_memory_mb"] = r.peak_memory_mb;
     return j.dump(1);
-}
-
-std::string human_summary(const AnalysisResult& r, const Correction* correction, const BlockDecomposition* blocks) {
-    const std::string name = std::filesystem::path(r.input_path.empty() ? "shape" : r.input_path).filename();
-    char tets[32];
-    const int nt = r.mesh.num_tets();
-    if (nt >= 10000) std::snprintf(tets, sizeof tets, "%dk tets", int(std::lround(nt / 1000.0)));
-    else std::snprintf(tets, sizeof tets, "%d tets", nt);
-    std::string s = name + ": " + tets;
-    if (r.has_singularities) {
-        const auto& m = r.singularities.summary;
-        s += ", " + std::to_string(m.curves) + " singular curve" + (m.curves == 1 ? "" : "s");
-        if (m.curves > 0) {
-            s += ": ";
-            std::vector<std::string> parts;
-            if (m.curves_3_5) parts.push_back(std::to_string(m.curves_3_5) + " 3-5");
-            if (m.valence3) parts.push_back(std::to_string(m.valence3) + " valence-3");
-            if (m.valence5) parts.push_back(std::to_string(m.valence5) + " valence-5");
-            for (size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];
-        }
-        if (m.invalid_nodes) s += ", " + std::to_string(m.invalid_nodes) + " invalid node" + (m.invalid_nodes == 1 ? "" : "s");
-        s += m.meshable ? " (hex-meshable)" : " (not hex-meshable)";
-    } else {
-        s += ", " + std::to_string(r.features.curves()) + " feature curves";
-    }
-    if (correction) {
-        const auto& b = correction->before;
-        s += "; before " + correction->method + ": " + std::to_string(b.curves_3_5) + " 3-5 curve" +
-             (b.curves_3_5 == 1 ? "" : "s") + ", " + std::to_string(correction->snap.snapped_curve_ids.size()) + " snapped";
-    }
-    if (blocks) {
-        s += "; " + std::to_string(blocks->count) + " block" + (blocks->count == 1 ? "" : "s") + ", " +
-             (blocks->valid == blocks->count ? std::string("all valid") : std::to_string(blocks->valid) + " valid") +
-             ", " + std::to_string(blocks->conforming_pairs) + "/" + std::to_string(blocks->pairs) + " pairs conforming";
-        if (blocks->flat_edges) s += ", " + std::to_string(blocks->flat_edges) + " flat edge" + (blocks->flat_edges == 1 ? "" : "s");
-    }
-    char t[32];
-    std::snprintf(t, sizeof t, "; %.1f s", r.timings.total + (blocks ? blocks->seconds : 0.0));
-    return s + t;
 }
 
 }  // namespace framefix

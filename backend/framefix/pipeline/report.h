@@ -1,25 +1,20 @@
 #pragma once
-// report.json (version 1, DESIGN.md) and the files ParaView opens, from an AnalysisResult.
+// report.json (version 1, docs/design.md) and the files ParaView opens, from a run's result.
 #include <string>
 #include <vector>
 
-#include "framefix/pipeline/block_stage.h"
-#include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 
 namespace framefix {
 
-// The report as JSON text. Sections a result does not have (no field yet, ...) are absent.
-// With a correction, "singularities" is the corrected graph and "correction" holds the before
-// and after summaries and the snapped paths.
-// With blocks, the "blocks" section holds the decomposition and its validation.
-std::string report_json(const AnalysisResult& result, const Correction* correction = nullptr,
-                        const BlockDecomposition* blocks = nullptr);
+// The report as JSON text. Sections of stages the run did not reach are absent. After a
+// correction, "singularities" is the corrected graph and "correction" holds the before and
+// after summaries and the snapped paths; after blocks, "blocks" the decomposition.
+std::string report_json(const RunResult& result);
 
-// Writes DIR/report.json and the VTK files; returns the paths written. Creates DIR.
-std::vector<std::string> write_outputs(const AnalysisResult& result, const std::string& dir,
-                                       const Correction* correction = nullptr,
-                                       const BlockDecomposition* blocks = nullptr);
+// Writes DIR/report.json and the VTK files of the stages the run reached; returns the paths
+// written. Creates DIR.
+std::vector<std::string> write_outputs(const RunResult& result, const std::string& dir);
 
 // Feature curves as ordered polylines of mesh vertices, one per B-rep edge tag.
 struct FeaturePolyline {
@@ -29,7 +24,9 @@ struct FeaturePolyline {
 std::vector<FeaturePolyline> feature_polylines(const TetMesh& mesh);
 
 // "notch.step: 58k tets, 1 singular curve: 1 3-5 curve (not hex-meshable); 0.6 s"
-std::string human_summary(const AnalysisResult& result, const Correction* correction = nullptr,
-                          const BlockDecomposition* blocks = nullptr);
+std::string human_summary(const RunResult& result);
+
+// `framefix info`: the backend's defaults and its correction methods, as JSON text.
+std::string info_json();
 
 }  // namespace framefix

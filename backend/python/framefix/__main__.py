@@ -1,4 +1,5 @@
-"""``python -m framefix mesh|analyze PART [--size H] [--out DIR]``: the command line, in Python.
+"""``python -m framefix mesh|analyze|correct|blocks PART [--size H] [--out DIR]`` and
+``python -m framefix info``: the command line, in Python.
 
 Same exit codes as the ``framefix`` program: 0 done, 2 bad input, 3 internal error.
 """
@@ -6,9 +7,17 @@ import argparse
 import sys
 
 
+STAGES = {"mesh": "mesh", "analyze": "singularities", "correct": "correct", "blocks": "blocks"}
+
+
 def main(argv=None):
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv[:1] == ["info"]:
+        import framefix
+        print(framefix._core.info_json())
+        return 0
     parser = argparse.ArgumentParser(prog="python -m framefix")
-    parser.add_argument("command", choices=["mesh", "analyze", "correct", "blocks"])
+    parser.add_argument("command", choices=sorted(STAGES))
     parser.add_argument("part")
     parser.add_argument("--size", type=float, default=0.0)
     parser.add_argument("--size-factor", type=float, default=1.0)
@@ -21,14 +30,10 @@ def main(argv=None):
         return 2 if e.code else 0
     import framefix
     try:
-        if args.command == "mesh":
-            result = framefix.mesh_part(args.part, args.size, args.size_factor, args.threads)
-        elif args.command == "blocks":
-            result = framefix.build_blocks(args.part, args.method, args.size, args.size_factor, args.threads)
-        elif args.command == "correct":
-            result = framefix.correct(args.part, args.method, args.size, args.size_factor, args.threads)
-        else:
-            result = framefix.analyze(args.part, args.size, args.size_factor, args.threads)
+        if args.command == "correct" and args.method == "none":
+            raise framefix.Error("correct: method 'none' corrects nothing; use analyze, or --method snap")
+        result = framefix.run(args.part, STAGES[args.command], args.method, args.size, args.size_factor,
+                              args.threads)
         result.write_outputs(args.out)
     except framefix.Error as e:
         print(f"framefix: error [{str(e).split(':', 1)[0]}]: {str(e).split(': ', 1)[-1]}", file=sys.stderr)

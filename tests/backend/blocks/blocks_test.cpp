@@ -12,7 +12,6 @@
 #include "backend/corrections/cube_fixture.h"
 #include "framefix/blocks/blocks.h"
 #include "framefix/core/error.h"
-#include "framefix/pipeline/correction.h"
 #include "framefix/pipeline/pipeline.h"
 
 namespace framefix {
@@ -21,7 +20,7 @@ namespace {
 std::string sample(const std::string& name) { return std::string(FRAMEFIX_SAMPLES_DIR) + "/" + name + ".step"; }
 
 struct SampleRun {
-    AnalysisResult result;
+    RunResult result;
     std::vector<SnappedPath> paths;
     BlockDecomposition blocks;
 };
@@ -32,13 +31,12 @@ const SampleRun& run(const std::string& name, double size) {
     auto& slot = cache[{name, size}];
     if (!slot) {
         slot = std::make_unique<SampleRun>();
-        AnalysisOptions options;
+        RunOptions options;
+        options.stop_after = Stage::blocks;
         options.mesh.size = size;
-        slot->result = analyze(sample(name), options);
-        if (slot->result.singularities.summary.curves_3_5 > 0)
-            slot->paths = correct(slot->result, CorrectionOptions{}, options).snap.paths;
-        const AnalysisResult& r = slot->result;
-        slot->blocks = build_blocks(r.mesh, r.topology, r.features, r.field, r.singularities, slot->paths);
+        slot->result = framefix::run(RunInput::file(sample(name)), options);
+        if (slot->result.correction) slot->paths = slot->result.correction->snap.paths;
+        slot->blocks = *slot->result.blocks;
     }
     return *slot;
 }
@@ -106,7 +104,7 @@ TEST(BlocksOnSamples, CubeIsOneValidBlock) {
     const SampleRun& r = run("cube", 0.08);
     EXPECT_EQ(r.blocks.count, 1);
     expect_all_valid(r.blocks);
-    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+    expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
 }
 
 TEST(BlocksOnSamples, LPrismIsThreeConformingBlocks) {
@@ -116,12 +114,12 @@ TEST(BlocksOnSamples, LPrismIsThreeConformingBlocks) {
     EXPECT_EQ(r.blocks.pairs, 2);
     EXPECT_EQ(r.blocks.conforming_pairs, 2);
     EXPECT_EQ(r.blocks.flat_edges, 0);
-    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+    expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
 }
 
 TEST(BlocksOnSamples, CylinderIsACentreAndFourBlocks) {
     const SampleRun& r = run("cylinder", 0.035);
-    ASSERT_EQ(r.result.singularities.summary.valence3, 4);
+    ASSERT_EQ(r.result.singularities->summary.valence3, 4);
     EXPECT_EQ(r.blocks.count, 5);
     expect_all_valid(r.blocks);
     EXPECT_EQ(r.blocks.pairs, 8);  // centre-outer 4, outer-outer 4
@@ -132,18 +130,18 @@ TEST(BlocksOnSamples, CylinderIsACentreAndFourBlocks) {
         if (r.blocks.blocks[b].neighbours.size() == 4) centre = b;
     ASSERT_GE(centre, 0);
     EXPECT_LT(r.blocks.blocks[centre].centroid.head<2>().norm(), 0.05);
-    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+    expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
 }
 
 TEST(BlocksOnSamples, SnappedNotchIsSevenConformingBlocks) {
     const SampleRun& r = run("notch", 0.05);
     ASSERT_EQ(r.paths.size(), 1u);
-    EXPECT_EQ(r.result.singularities.summary.curves_3_5, 0);
+    EXPECT_EQ(r.result.singularities->summary.curves_3_5, 0);
     EXPECT_EQ(r.blocks.count, 7);
     expect_all_valid(r.blocks);
     EXPECT_EQ(r.blocks.pairs, 9);
     EXPECT_EQ(r.blocks.conforming_pairs, 9);
-    expect_partition(r.result.mesh, r.result.topology, r.blocks);
+    expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
 }
 
 TEST(BlocksOnSamples, SnappedNotchReportsTheFlatEdgeUnderThePocket) {

@@ -1,0 +1,29 @@
+#pragma once
+// What a run does: where it stops, which correction it applies, and each stage's options.
+#include <string>
+
+#include "framefix/blocks/blocks.h"
+#include "framefix/brep/brep_model.h"
+#include "framefix/core/progress.h"
+#include "framefix/corrections/snapping.h"
+#include "framefix/pipeline/stages.h"
+
+namespace framefix {
+
+constexpr const char* kNoCorrection = "none";  // RunOptions::correction that skips the stage
+
+struct RunOptions {
+    Stage stop_after = Stage::singularities;
+    std::string correction = "snap";  // a registered method (correction_methods.h) or kNoCorrection
+    MeshOptions mesh;
+    FeatureOptions features;
+    FieldOptions field;
+    SingularityOptions singularities;
+    SnapOptions snap;
+    BlockOptions blocks;
+    double size_factor = 1;  // multiplies the default size when mesh.size == 0
+    int threads = 0;         // OpenMP threads of this run's parallel loops, 0 = all cores
+    ProgressSink progress;   // fractions per stage, stages in run order
+};
+
+}  // namespace framefix

@@ -1,0 +1,22 @@
+#include "framefix/pipeline/solve_stages.h"
+
+namespace framefix::detail {
+
+FieldStage solve_field(const MeshStage& mesh, Constraints constraints, const RunOptions& options,
+                       const ProgressSink& progress) {
+    FieldOptions fo = options.field;
+    if (!fo.progress) fo.progress = progress;
+    if (fo.threads == 0) fo.threads = options.threads;
+    FieldStage f;
+    f.constraints = std::move(constraints);
+    f.frames = solve_frame_field(mesh.tets, mesh.topology, f.constraints, fo);
+    return f;
+}
+
+SingularityGraph find_singularities(const MeshStage& mesh, const FieldStage& field, const RunOptions& options) {
+    SingularityOptions so = options.singularities;
+    if (so.threads == 0) so.threads = options.threads;
+    return extract_singularities(mesh.tets, mesh.topology, field.frames, so);
+}
+
+}  // namespace framefix::detail

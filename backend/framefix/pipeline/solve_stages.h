@@ -1,0 +1,19 @@
+#pragma once
+// Field and singularity stages, shared by the first solve and the re-solve of a correction.
+// Internal to the pipeline module: callers outside it use run().
+#include "framefix/pipeline/run_options.h"
+#include "framefix/pipeline/stages.h"
+
+namespace framefix::detail {
+
+// Solves the field under `constraints`; the solver's progress goes to `progress`.
+FieldStage solve_field(const MeshStage& mesh, Constraints constraints, const RunOptions& options,
+                       const ProgressSink& progress);
+
+SingularityGraph find_singularities(const MeshStage& mesh, const FieldStage& field, const RunOptions& options);
+
+// The correction stage: applies `options.correction` and, when it changed the set-up,
+// re-solves `field` and re-extracts `graph` in place.
+Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options);
+
+}  // namespace framefix::detail

@@ -1,0 +1,48 @@
+#pragma once
+// The stages of a run, in the order they run, and what each one produces.
+#include <string>
+
+#include "framefix/corrections/snapping.h"
+#include "framefix/frame_field/frame_field.h"
+#include "framefix/mesh/features.h"
+#include "framefix/mesh/tet_mesh.h"
+#include "framefix/mesh/tet_topology.h"
+#include "framefix/singularities/singularity_graph.h"
+
+namespace framefix {
+
+// In run order; a run stops after the stage RunOptions::stop_after names.
+enum class Stage { load, mesh, field, singularities, correction, blocks };
+
+// The stage's name in progress lines and errors: load, mesh, field, singularities, correct, blocks.
+const char* stage_name(Stage stage);
+
+struct MeshStage {              // feature curves and the tet mesh that carries them
+    FeatureSet features;
+    TetMesh tets;
+    TetTopology topology;
+};
+
+struct FieldStage {             // boundary conditions and the frame field solved under them
+    Constraints constraints;
+    FrameField frames;
+};
+
+// What a correction did. The run's field and singularities are the corrected ones; the field
+// and graph that were corrected are kept here.
+struct Correction {
+    std::string method;
+    SingularitySummary before;      // summary of the graph that was corrected
+    SingularityGraph graph_before;
+    FrameField field_before;
+    SnapResult snap;                // filled by method "snap"
+    bool changed = false;           // the method changed the set-up; field and graph were re-solved
+    double rotated_fraction = 0;    // vertices whose frame turned by more than 10 degrees
+    double seconds = 0;             // method + re-solve + re-extraction
+};
+
+struct Timings {  // seconds
+    double load = 0, mesh = 0, field = 0, singularities = 0, correct = 0, blocks = 0, total = 0;
+};
+
+}  // namespace framefix
