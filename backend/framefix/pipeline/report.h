@@ -1,5 +1,5 @@
 #pragma once
-// report.json (version 1, DESIGN.md) and the files ParaView opens, from an AnalysisResult.
+// report.json (version 1, docs/design.md#reportjson) and the files ParaView opens, from an AnalysisResult.
 #include <string>
 #include <vector>
 
