@@ -2,7 +2,7 @@
 // analyze -> snap the 3-5 curves -> re-solve on the same mesh -> extract, for each sample (a path,
 // or a name in samples/ such as "notch"); prints before/after summaries, the snapped curves, the
 // locality of the change and timings. With --passes 2 the corrected result is snapped again
-// (a correction can leave 3-5 curves that a second pass removes).
+// (re-run the detection after the correction: docs/algorithms.md#3-5-detection).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,7 +31,7 @@ void print_summary(const char* tag, const SingularityGraph& g) {
                 s.complex_faces, s.mixed_loops, int(s.meshable));
 }
 
-// Singular faces after the correction that touch a path or freed vertex: the prototype's test
+// Singular faces after the correction that touch a path or freed vertex: the locality test
 // that nothing is left where the snapped curves were.
 int singular_faces_near(const TetTopology& topo, const SingularityGraph& g, const std::vector<SnapRole>& roles) {
     int n = 0;

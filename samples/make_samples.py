@@ -1,4 +1,4 @@
-"""Build FrameFix's sample parts (ALGORITHMS.md section 9) as STEP files, and the bad inputs
+"""Build FrameFix's sample parts (samples/README.md) as STEP files, and the bad inputs
 the loader tests use.
 
 Run with the interpreter FreeCAD embeds, from anywhere:

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Runs `framefix analyze` (or `correct`) on every model of a folder (default: the HexMe set in
-../shared/data/hexme) and prints a table of summaries and timings. Not part of ctest.
+shared/data/hexme beside the repository folder) and prints a table of summaries and timings. Not part of ctest.
 
     /usr/bin/python3 scripts/run_hexme.py [--command correct] [--folder DIR] [--size-factor F]
 """

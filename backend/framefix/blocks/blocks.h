@@ -1,5 +1,5 @@
 #pragma once
-// Block decomposition of a (corrected) frame field (ALGORITHMS.md §8 with section 0's §8 rules):
+// Block decomposition of a (corrected) frame field (docs/algorithms.md#blocks):
 // separatrix sheets are traced from the singular curves (valence k: k sheets), from the concave
 // feature curves (2 inward sheets) and from the snapped paths of the boundary snapping (2 inward
 // sheets); the mesh edges the sheets cut split the vertices into components, the tets take their
@@ -7,7 +7,7 @@
 // manifold. Each block is then checked to be a topological hexahedron (6 disk faces, 12 edges, 8
 // corners of degree 3) and each pair of neighbouring blocks to share one whole face, corner to
 // corner. Flat block edges/corners (zero-Jacobian after snapping) are found with the normal-angle
-// proxy of section 0 and reported, not refined (§8.4 is not implemented). No hex mesh is built.
+// proxy and reported, not refined (no sheet insertion). No hex mesh is built.
 #include <string>
 #include <vector>
 
@@ -26,7 +26,7 @@ struct BlockOptions {
     double step = 0.4;             // streamline RK4 step, in mean edge lengths h
     double seed_spacing = 1;       // seeds along singular curves, in h
     double seed_radius = 0.5;      // radius of the circle on which separatrix directions are found, in h
-                                   // (section 0: 1 h fails when a curve is 1-2 h from the wall)
+                                   // (1 h fails when a curve is 1-2 h from the wall)
     double stop_distance = 1.5;    // streamlines stop this close to a singular curve, in h
     double match_deg = 40;         // consecutive seeds' directions pair into a ribbon below this angle
     double overshoot = 1;          // lateral widening of feature/snapped-path ribbons, in h (rule 6)
@@ -37,8 +37,8 @@ struct BlockOptions {
     // Patches touching <= 3 other patches merge below this area, in h^2: a face of a hexahedron has
     // 4 neighbouring faces, so such a patch is a sliver where four blocks meet along a line.
     double sliver_area = 6;
-    // Patches with w = 2 area / perimeter below this merge (staircase strips), in h. Section 0 used
-    // 0.75 on gmsh meshes; TetGen meshes leave ~0.8 h strips where 4 blocks meet, and a real face of
+    // Patches with w = 2 area / perimeter below this merge (staircase strips), in h. 0.75 suits
+    // gmsh meshes; TetGen meshes leave ~0.8 h strips where 4 blocks meet, and a real face of
     // a block >= 3 h thick has w >= 1.5 h.
     double thin_width = 1.0;
     double bevel_width = 2.5;      // strip-like patches below this width between two ~90 deg flanks split, in h
@@ -54,7 +54,7 @@ struct BlockInfo {
     int faces = 0, edges = 0, corners = 0;  // counts on the block's boundary after patch cleaning
     int euler = 0;                 // Euler characteristic of the boundary surface (2 for a sphere)
     bool manifold = false;         // every boundary edge in exactly two boundary triangles
-    // Flat-edge proxy (section 0): outward mean normals of the two faces, within 2 h of their common
+    // Flat-edge proxy (docs/algorithms.md#flat-edges-and-corners): outward mean normals of the two faces, within 2 h of their common
     // chain, closer than flat_deg (about 90 deg at a proper edge). Counted per pair of adjacent faces.
     int flat_edges = 0;
     int flat_corners = 0;          // corners where two incident faces' mean normals (within 2 h) are < flat_deg apart

@@ -1,5 +1,5 @@
 #pragma once
-// From sheets to a tet labelling (section 0, §8.2 items 4-5 and rule 7). Internal to blocks.
+// From sheets to a tet labelling (docs/algorithms.md#cut-edges, #partition, #staircase-cleaning). Internal to blocks.
 #include <vector>
 
 #include <Eigen/Core>

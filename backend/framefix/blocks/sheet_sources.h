@@ -1,5 +1,5 @@
 #pragma once
-// Seeds and start directions of the separatrix sheets (section 0, §8.2 item 1). Internal to blocks.
+// Seeds and start directions of the separatrix sheets (docs/algorithms.md#sheet-sources). Internal to blocks.
 #include <string>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Separatrix sheets as ribbons between neighbouring streamlines (section 0, §8.2 items 2, 3, 6).
+// Separatrix sheets as ribbons between neighbouring streamlines (docs/algorithms.md#sheets).
 // Internal to blocks.
 #include <vector>
 

@@ -1,4 +1,4 @@
-// Rule 7 of section 0: the vertex partition leaves staircase boundaries where a block touches
+// docs/algorithms.md#staircase-cleaning: the vertex partition leaves staircase boundaries where a block touches
 // itself along a mesh edge (two separate fans of boundary faces) or at a vertex (a pinched link).
 // Both are removed by moving the minority side of the edge ring / vertex star.
 #include <algorithm>

@@ -84,7 +84,7 @@ int longest_contact(const std::map<int, double>& contact) {
     return best;
 }
 
-// Section 0: tiny patches, thin staircase strips, and bevel strips between two ~90 deg flanks.
+// docs/algorithms.md#block-faces-and-patch-cleaning: tiny patches, thin staircase strips, and bevel strips between two ~90 deg flanks.
 void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, const Adjacency& adj, double h,
                    const BlockOptions& o, std::vector<int>& patch) {
     for (int it = 0; it < 30; ++it) {  // tiny patches, smallest first

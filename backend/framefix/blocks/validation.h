@@ -1,6 +1,6 @@
 #pragma once
-// Block validity and conformity (§8.3 with section 0's labelling, patch cleaning and conformity
-// rules). Internal to blocks.
+// Block validity and conformity (docs/algorithms.md#block-faces-and-patch-cleaning, #block-validation,
+// #conformity). Internal to blocks.
 #include <vector>
 
 #include <Eigen/Core>

@@ -142,7 +142,7 @@ BoundaryPath shortest_boundary_path(const BoundaryGraph& g, int from, int to) {
     path.vertices = dijkstra(g, from, to, true, path.length);
     if (path.vertices.empty()) {
         // E.g. the two targets lie on faces separated by feature curves: crossing one is the
-        // only way, the prototype accepted it.
+        // only way, and it is accepted (crosses_features).
         path.vertices = dijkstra(g, from, to, false, path.length);
         path.crosses_features = true;
     }

@@ -1,7 +1,7 @@
 #pragma once
 // The boundary edge graph that snapped curves live on (internal to corrections): boundary mesh
 // edges with their lengths, which vertices are on feature curves, outward vertex normals, and the
-// Dijkstra shortest path between two boundary vertices (ALGORITHMS.md section 0, §7.4 item 4).
+// Dijkstra shortest path between two boundary vertices (docs/algorithms.md#boundary-paths).
 #include <vector>
 
 #include "framefix/frame_field/frame_field.h"

@@ -1,8 +1,8 @@
 #pragma once
-// Which boundary vertices lose their tangency constraint (ALGORITHMS.md section 0, §7.4 item 7):
+// Which boundary vertices lose their tangency constraint (docs/algorithms.md#free-boundary):
 // those within Euclidean distance r of a snapped path polyline. Without this the 45 deg path
 // frames and the normal-aligned frames next to them are incompatible and the solver keeps a
-// singular arc along the path (r = 0 fails in the prototype; 1..6 hb all work).
+// singular arc along the path (r = 0 fails; 1..6 hb all work).
 #include <vector>
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 #pragma once
-// Dirichlet frames along a snapped path (paper §4.4, ALGORITHMS.md section 0 §7.4 item 5):
+// Dirichlet frames along a snapped path (docs/algorithms.md#path-frames):
 //   t_k = chord x_{k+w} - x_{k-w} (indices clamped), projected onto the tangent plane, unit;
 //   n   = outward vertex normal (at a feature-curve end point: the next path vertex's normal);
 //   a1 = t, a2 = cos(angle) n + sin(angle) (t x n), a3 = t x a2.

@@ -25,7 +25,7 @@ struct Planner {
     int rep(int node) const { return ends.node_rep[node]; }
 
     // Boundary ends (and unmerged dead ends) go to the nearest feature-curve vertex, interior
-    // nodes to the nearest boundary vertex (paper §4.4).
+    // nodes to the nearest boundary vertex (docs/algorithms.md#snap-targets).
     int target_of(int node) const {
         const Eigen::Vector3d p = graph.nodes[rep(node)].position;
         const bool interior = ends.node_kind[node] == EndKind::Junction;

@@ -1,6 +1,6 @@
 #pragma once
-// Which curves to snap and where their extremities go (internal to corrections; ALGORITHMS.md
-// section 0, §7.4 items 1-3):
+// Which curves to snap and where their extremities go (internal to corrections;
+// docs/algorithms.md#extremities, #snap-targets, #snap-plan-and-collapse-rule):
 // - extremity kinds: a curve end on a boundary triangle is a boundary node; an end at a junction
 //   cluster is an interior node; a "dead end" (an interior node with a single curve end) belongs to
 //   the nearest interior junction within dead_end_radius_h, else it is treated like a boundary end;

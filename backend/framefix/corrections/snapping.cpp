@@ -98,7 +98,7 @@ std::set<int> collapsed_feature_points(const SnapPlan& plan, const BoundaryGraph
 void apply_anchors(const TetMesh& mesh, const FeatureSet& features, const Constraints& original,
                    const std::map<int, SH9>& anchors, const std::set<int>& collapsed, const SnapOptions& options,
                    SnapResult& r) {
-    // Without interpolation (the default) only S itself takes the path frame: the prototype found
+    // Without interpolation (the default) only S itself takes the path frame: that gives
     // the same singularities with a more local change. A curve collapsed onto a feature vertex
     // leaves no path frame to impose, so its feature curve is always re-interpolated between its
     // ends: that is the only change that removes it.

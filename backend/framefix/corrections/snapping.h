@@ -1,5 +1,5 @@
 #pragma once
-// Boundary snapping of 3-5 curves (paper §4.4, ALGORITHMS.md §7.4 as amended by section 0).
+// Boundary snapping of 3-5 curves (the paper's recommended correction; docs/algorithms.md#boundary-snapping).
 // A 3-5 curve (valence 3 at one end, 5 at the other) cannot be realised by a hex mesh. Snapping
 // moves it onto the boundary: both extremities go to the boundary (a boundary end to the nearest
 // feature-curve vertex, an internal node to the nearest boundary vertex), curves left with one
@@ -9,7 +9,7 @@
 // paper's box with an imprinted arc) gets no path: its feature curve is re-interpolated between
 // its ends instead. This module only builds the new boundary conditions: the caller re-solves the
 // field (same mesh) and re-extracts the singularities; the snapped curves are invisible to
-// holonomy afterwards, so SnapResult::paths must be kept as extra feature curves (blocks, §8).
+// holonomy afterwards, so SnapResult::paths must be kept as extra feature curves (blocks/).
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,7 +24,7 @@ namespace framefix {
 
 struct SnapOptions {
     // Tangency-constrained boundary vertices within this Euclidean distance of a snapped path are
-    // freed (9 dof). In units of hb = mean boundary edge length; section 0 tested 1..6 (0 fails).
+    // freed (9 dof). In units of hb = mean boundary edge length; 1..6 work, 0 fails.
     double free_radius_hb = 2.5;
     // Collapse rule: a forced curve's boundary end closer than this to the snap target of its other
     // (already snapped) end is mapped onto that target and gets no path. Units of hb.
@@ -33,7 +33,7 @@ struct SnapOptions {
     // node within this distance. Units of h_mean = mean tet edge length.
     double dead_end_radius_h = 3;
     // Angle of the two non-tangent path-frame axes from the surface normal, degrees. 45 is the
-    // paper's value and the only one that worked in the prototype (0 and 22.5 leave curves).
+    // paper's value and the only one that works (0 and 22.5 leave curves).
     double path_frame_angle_deg = 45;
     // Half-width (in path vertices) of the chord used for path tangents: t_k = x_{k+w} - x_{k-w}.
     // Dijkstra paths zig-zag by up to 45 deg; w = 2 smooths that out.

@@ -1,6 +1,6 @@
 #pragma once
-// Feature curves that receive a snapped end point S (paper §4.4 "split and interpolate";
-// ALGORITHMS.md section 0, §7.4 item 6). On each curve the anchors are the S points (with their
+// Feature curves that receive a snapped end point S (the paper's "split and interpolate";
+// docs/algorithms.md#split-curves). On each curve the anchors are the S points (with their
 // path frame) and the curve's two end vertices (with their existing Dirichlet frame); between
 // consecutive anchors q = proj((1 - w) q_A + w q_B), w = normalised arc length. A closed curve
 // whose CAD vertex is not a Dirichlet corner uses only its S anchors, cyclically.

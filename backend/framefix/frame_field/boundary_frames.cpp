@@ -1,4 +1,4 @@
-// Dirichlet frames of feature-curve vertices (§1.4) and corners (section 0 rule).
+// Dirichlet frames of feature-curve vertices and corners (docs/algorithms.md#feature-and-corner-frames).
 #include <cmath>
 
 #include <Eigen/SVD>

@@ -1,5 +1,5 @@
 #pragma once
-// The admissible fields of the constrained problem (ALGORITHMS.md §3.1): q = c + x with x in
+// The admissible fields of the constrained problem (docs/algorithms.md#constrained-space): q = c + x with x in
 // V = range(P), P block-diagonal per vertex (I9 free, the 9x2 normal-aligned basis P_n, or empty
 // for fixed frames). The columns of every P block are orthonormal, so the orthogonal projector
 // onto V is P P^T vertex by vertex and the reduced system P^T A P y = P^T b is equivalent to

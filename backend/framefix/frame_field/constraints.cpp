@@ -1,4 +1,4 @@
-// boundary_constraints (ALGORITHMS.md §1.3, §1.4 with the section-0 corner rules).
+// boundary_constraints (docs/algorithms.md#boundary-constraints).
 #include <algorithm>
 #include <array>
 #include <map>

@@ -1,5 +1,5 @@
 #pragma once
-// Boundary-aligned frame field on a tet mesh (ALGORITHMS.md §3): constraints per vertex from the
+// Boundary-aligned frame field on a tet mesh (docs/algorithms.md#frame-field): constraints per vertex from the
 // boundary and the feature curves, linear initialisation, then MBO diffuse-project iterations.
 #include <string>
 #include <vector>

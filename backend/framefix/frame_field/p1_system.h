@@ -1,5 +1,5 @@
 #pragma once
-// P1 finite elements on a tet mesh (ALGORITHMS.md §3.1): the scalar stiffness matrix K and the
+// P1 finite elements on a tet mesh (docs/algorithms.md#p1-system): the scalar stiffness matrix K and the
 // lumped mass M, shared by the nine SH channels. Internal to frame_field.
 #include <vector>
 

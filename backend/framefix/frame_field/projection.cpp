@@ -1,4 +1,4 @@
-// Multi-start Riemannian Newton projection onto the frame manifold (ALGORITHMS.md §2.2).
+// Multi-start Riemannian Newton projection onto the frame manifold (docs/algorithms.md#projection-onto-frames).
 #include "framefix/frame_field/projection.h"
 
 #include <algorithm>

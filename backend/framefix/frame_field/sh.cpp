@@ -1,5 +1,5 @@
-// Band-4 SH basis, generators and closed-form rotations. Constants: ALGORITHMS.md §1.1, checked
-// against shared/reference/verify (sh4.py, zyz.py) by tests/backend/frame_field/test_sh.cpp.
+// Band-4 SH basis, generators and closed-form rotations (docs/algorithms.md#frames-as-spherical-harmonics), checked
+// against an independent numerical derivation by tests/backend/frame_field/test_sh.cpp.
 #include "framefix/frame_field/sh.h"
 
 #include <algorithm>
@@ -15,7 +15,7 @@ struct Entry {
     double v;
 };
 
-// Upper-triangle non-zeros of Lx, Ly, Lz (§1.1); L[j][i] = -L[i][j].
+// Upper-triangle non-zeros of Lx, Ly, Lz, the generators of D(R); L[j][i] = -L[i][j].
 Mat9 antisymmetric(std::initializer_list<Entry> upper) {
     Mat9 L = Mat9::Zero();
     for (const Entry& e : upper) {
@@ -48,7 +48,7 @@ Mat9 make_x90() {
     return X;
 }
 
-// 1 / |sum_k Y4(e_k)|: makes C0 * sum_k Y4(R e_k) the unit vector D(R) f_ref (section 0).
+// 1 / |sum_k Y4(e_k)|: makes C0 * sum_k Y4(R e_k) the unit vector D(R) f_ref (exact).
 double frame_scale() {
     const SH9 s = sh_basis(Eigen::Vector3d::UnitX()) + sh_basis(Eigen::Vector3d::UnitY()) +
                   sh_basis(Eigen::Vector3d::UnitZ());
@@ -134,7 +134,7 @@ SH9 frame_from_rotation(const Eigen::Matrix3d& R) {
 
 NormalAligned normal_aligned(const Eigen::Vector3d& n) {
     const Eigen::Vector3d z = n.normalized();
-    // Any rotation taking e_z to n: its angle about n only rotates (a, b) of §1.3.
+    // Any rotation taking e_z to n: its angle about n only rotates y = (a, b) of c + P y.
     const Eigen::Vector3d helper = std::abs(z.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
     const Eigen::Vector3d u = z.cross(helper).normalized();
     Eigen::Matrix3d Rn;

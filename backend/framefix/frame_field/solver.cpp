@@ -1,5 +1,5 @@
-// solve_frame_field: linear initialisation + projection (§3.2), then MBO diffuse/project with the
-// section-0 schedule (§3.3), then the optional relaxed step.
+// solve_frame_field: linear initialisation + projection, then MBO diffuse/project with the
+// schedule of docs/algorithms.md#mbo-smoothing, then the optional relaxed step.
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -19,11 +19,11 @@ using Clock = std::chrono::steady_clock;
 constexpr double kRetryDistance = 0.3;  // |q/|q| - proj|: beyond it a warm projection is re-checked
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Per-vertex projection onto the frames allowed by the vertex's constraint. Free vertices: §2.2,
+// Per-vertex projection onto the frames allowed by the vertex's constraint. Free vertices:
 // multi-start (top-5 of 48) when cold; in MBO one Newton run from the previous rotation (the
 // iterates move little), retried with the top-5 starts when the result is far from the manifold
 // (a frame that jumped: the warm run may sit on a non-global maximum). Normal-aligned:
-// rescale (a, b) to the circle of radius sqrt(5/12) (§1.3). Fixed: the constraint itself.
+// rescale (a, b) to the circle of radius sqrt(5/12). Fixed: the constraint itself.
 void project_field(const ConstrainedSpace& s, FrameCoefficients& q, std::vector<Eigen::Matrix3d>& R, bool warm,
                    int threads) {
     ProjectionOptions cold;
@@ -115,7 +115,7 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
     report(o.progress, "field", 0.1);
 
     // MBO. tau_k = max(tau_0 / k^p, h^2): the first steps smooth globally, the later ones at the
-    // mesh scale. Stop on the relative change only once tau sits at its floor (section 0).
+    // mesh scale. Stop on the relative change only once tau sits at its floor (MBO energy is not monotone).
     const auto t_smooth = Clock::now();
     const double lambda1 = std::pow(M_PI / sys.diameter, 2);
     const double tau0 = o.tau_factor / lambda1, tau_floor = sys.mean_edge * sys.mean_edge;
@@ -173,7 +173,7 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
 
     out.distance = Eigen::VectorXd::Zero(nv);
     if (o.relaxed_final_step) {
-        // Ginzburg-Landau-like relaxation: |q| drops below 1 only near singular curves (§4.5).
+        // Ginzburg-Landau-like relaxation: |q| drops below 1 only near singular curves (docs/algorithms.md#relaxed-final-step).
         FrameCoefficients relaxed(nv, 9);
         diffuse(q, 2.0 * tau_floor, relaxed);
         out.relaxed_norm = relaxed.rowwise().norm();

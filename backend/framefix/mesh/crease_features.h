@@ -14,7 +14,7 @@ namespace framefix {
 
 struct CreaseOptions {
     double angle_deg = 30;  // crease threshold between outward normals, degrees; typically 20..40
-                            // (30 matches the B-rep feature test of ALGORITHMS.md section 0)
+                            // (30 is also the B-rep threshold: docs/algorithms.md#feature-classification)
 };
 
 struct CreaseFeatures {

@@ -1,5 +1,5 @@
 #pragma once
-// report.json (version 1, docs/design.md) and the files ParaView opens, from a run's result.
+// report.json (version 1, docs/design.md#reportjson) and the files ParaView opens, from a run's result.
 #include <string>
 #include <vector>
 

@@ -61,7 +61,7 @@ EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<R
         for (RawEnd& e : ch.ends) {
             if (e.type != EndType::Dead) continue;
             ++stats.dead_ends;
-            // Section 0 §7.4: ring curves often stop one tet short of their junction.
+            // Ring curves often stop one tet short of their junction (docs/algorithms.md#chain-ends-and-nodes).
             const Eigen::Vector3d p = tet_centroid(c.mesh, e.tet);
             double best = attach_radius;
             for (const auto& [cl, x] : junction) {

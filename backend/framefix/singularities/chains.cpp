@@ -27,7 +27,7 @@ ChainContext classify_tets(const TetMesh& mesh, const TetTopology& topo, const s
         for (int lf = 0; lf < 4; ++lf) {
             const int v = val[topo.tet_faces(t, lf)];
             c.ns[t] += v != 0;
-            node[t] |= v == -1;  // complex faces are node material (section 0 §4.1)
+            node[t] |= v == -1;  // complex faces are node material (docs/algorithms.md#valence-sign-rule)
         }
     for (int t = 0; t < nt; ++t) node[t] |= c.ns[t] >= 3;
     // Junction clusters: node tets sharing a vertex.

@@ -1,5 +1,5 @@
 #pragma once
-// Singular triangles -> curves and nodes (ALGORITHMS.md §4.2 with section 0 §7.4 item 1).
+// Singular triangles -> curves and nodes (docs/algorithms.md#chains, #chain-ends-and-nodes).
 // Internal to singularities/, exposed for the tests, which feed it hand-made face labels.
 //
 // - A tet with exactly two singular faces (neither complex) links them: the curve passes through.
@@ -22,7 +22,7 @@
 namespace framefix {
 
 struct ChainOptions {
-    double attach_distance = 3;  // dead-end attachment radius, in mean edge lengths (section 0: 3)
+    double attach_distance = 3;  // dead-end attachment radius, in mean edge lengths
 };
 
 struct ChainNode {

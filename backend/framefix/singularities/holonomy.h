@@ -1,6 +1,6 @@
 #pragma once
-// Per-triangle holonomy of a per-vertex frame field (ALGORITHMS.md §4.1 with the section 0
-// amendments): internal to singularities/, exposed for the tests.
+// Per-triangle holonomy of a per-vertex frame field (docs/algorithms.md#edge-transport-and-holonomy,
+// #valence-sign-rule): internal to singularities/, exposed for the tests.
 //
 // Transport along a mesh edge (a, b), a < b, is one cube rotation T_ab: R_b T_ab is the
 // representative of frame b that the field carries over from R_a. It is found by matching through

@@ -1,5 +1,5 @@
 #pragma once
-// Hex-meshability of singular nodes (ALGORITHMS.md §5). Internal to singularities/, exposed for
+// Hex-meshability of singular nodes (docs/algorithms.md#node-validity). Internal to singularities/, exposed for
 // the tests.
 //
 // Interior node: the link of a hex-mesh vertex is a sphere triangulation whose vertex degrees are

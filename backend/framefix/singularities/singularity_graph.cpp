@@ -93,7 +93,7 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
         n.tets = cn.tets;
         g.nodes.push_back(n);
     }
-    // A curve passing through a node counts twice, a curve from a node back to it too (§5).
+    // A curve passing through a node counts twice, a curve from a node back to it too (docs/algorithms.md#3-5-detection).
     for (const SingularCurve& c : g.curves)
         if (!c.closed)
             for (int k = 0; k < 2; ++k) (c.end_valence[k] == 3 ? g.nodes[c.ends[k]].n3 : g.nodes[c.ends[k]].n5) += 1;

@@ -1,5 +1,5 @@
 #pragma once
-// Singularity graph of a frame field (ALGORITHMS.md §4-§5 and section 0). Definitions:
+// Singularity graph of a frame field (docs/algorithms.md#singularities). Definitions:
 // - holonomy of a triangle: the cube rotation g_H picked up by carrying the frame around its
 //   three edges (sub-sampled so consecutive frames are < 45 deg apart);
 // - a singular triangle has a 90 deg holonomy; its valence is 3 (index +1/4) when the holonomy

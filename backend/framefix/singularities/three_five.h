@@ -1,5 +1,5 @@
 #pragma once
-// Valence labels along one curve -> curve kind (ALGORITHMS.md section 0 §4.3). Internal to
+// Valence labels along one curve -> curve kind (docs/algorithms.md#3-5-detection). Internal to
 // singularities/, exposed for the tests.
 //
 // Labels are smoothed by a majority window; an OPEN curve is a 3-5 curve iff the majority of its

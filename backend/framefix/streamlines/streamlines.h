@@ -1,5 +1,5 @@
 #pragma once
-// Streamlines of a frame field (paper Algorithm 1, ALGORITHMS.md §6 with section 0's §8.2 item 2):
+// Streamlines of a frame field (paper Algorithm 1; docs/algorithms.md#rk4-tracing):
 // RK4 in the "closest direction" field, i.e. at a point p and a current direction v, the
 // barycentric average of the per-vertex frame axes closest to v (no projection per stage).
 // A streamline follows one axis family through the field; it stops when it leaves the solid, comes

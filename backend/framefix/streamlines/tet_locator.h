@@ -1,5 +1,5 @@
 #pragma once
-// Point location in a tet mesh (ALGORITHMS.md §6): a visibility walk from the last tet, and a
+// Point location in a tet mesh (docs/algorithms.md#point-location): a visibility walk from the last tet, and a
 // uniform grid of tet bounding boxes for the first location. Immutable after construction, so
 // one locator serves all threads.
 #include <vector>

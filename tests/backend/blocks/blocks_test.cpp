@@ -1,4 +1,4 @@
-// Block decompositions with known answers (ALGORITHMS.md section 0, §8): the cube is one block,
+// Block decompositions with known answers (docs/algorithms.md#blocks): the cube is one block,
 // the L-shaped prism three, the cylinder five (a centre block and four around it; needs h <= 0.035
 // so that the outer blocks are >= 3 elements thick), the notch after boundary snapping seven, all
 // valid hexahedra, all neighbour pairs conforming, with the flat edge under the pocket reported.

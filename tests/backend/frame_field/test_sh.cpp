@@ -69,7 +69,7 @@ TEST(Sh, ClosedFormZAndX90MatchTheRotations) {
         EXPECT_NEAR(sh_basis(s).dot(sh_rotation_z(0.37) * f), sh_basis(Rz.transpose() * s).dot(f), 1e-12);
         EXPECT_NEAR(sh_basis(s).dot(sh_rotation_x90() * f), sh_basis(Rx.transpose() * s).dot(f), 1e-12);
     }
-    // A few entries of shared/reference/verify/X90.npy (numerical derivation, independent of §1.1).
+    // A few entries of X90 from a numerical derivation, independent of the closed form in sh.cpp.
     const Mat9& X = sh_rotation_x90();
     EXPECT_NEAR(X(4, 8), 0.7395099728874516, 1e-12);
     EXPECT_NEAR(X(6, 6), 0.5, 1e-12);
@@ -84,7 +84,7 @@ TEST(Sh, GeneratorsAreTheDerivativesOfTheRotations) {
         EXPECT_LT((fd - sh_generator(axis)).cwiseAbs().maxCoeff(), 1e-8) << axis;
         EXPECT_LT((sh_generator(axis) + sh_generator(axis).transpose()).cwiseAbs().maxCoeff(), 1e-15);
     }
-    // Entries of shared/reference/verify/L.npy (finite differences of sampled rotations).
+    // Entries of L from finite differences of sampled rotations.
     EXPECT_NEAR(sh_generator(0)(0, 7), -1.41421356237381, 1e-9);
     EXPECT_NEAR(sh_generator(0)(3, 4), -3.1622776601475406, 1e-9);
     EXPECT_NEAR(sh_generator(1)(4, 5), -3.1622776601503357, 1e-9);

@@ -131,7 +131,7 @@ TEST(Solver, DeterministicForTheSameInputAndThreads) {
 }
 
 // MBO alternates an energy-decreasing diffusion with a projection that may raise the energy,
-// so the energy is NOT monotone along the iterations (ALGORITHMS.md section 0) and we do not test
+// so the energy is NOT monotone along the iterations (docs/algorithms.md#mbo-smoothing) and we do not test
 // that. What holds: MBO starts from the projected linear init, its later small-tau steps only
 // smooth at the mesh scale, and on a well-posed problem the final field has a lower energy than
 // that starting point.

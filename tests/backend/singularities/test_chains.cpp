@@ -75,7 +75,7 @@ TEST(Chains, DeadEndNearAJunctionIsAttachedToIt) {
     Grid g;
     for (const Vector3d& d : {Vector3d(1, 0.11, 0.07), Vector3d(-0.13, 1, 0.05), Vector3d(0.08, 0.1, -1)})
         g.segment(kP, kP + 2 * d);
-    // The fourth curve stops about one cell short of the junction (ring curves do, section 0).
+    // The fourth curve stops about one cell short of the junction (ring curves do, docs/algorithms.md#chain-ends-and-nodes).
     const Vector3d d = Vector3d(-1, -1.07, 0.09).normalized();
     g.segment(kP + 0.25 * d, kP + 2 * d);
     const ChainGraph c = g.trace();

@@ -1,4 +1,4 @@
-// Per-loop holonomy and the valence sign rule (ALGORITHMS.md §4.1, verify/holo.py).
+// Per-loop holonomy and the valence sign rule (docs/algorithms.md#valence-sign-rule).
 #include <gtest/gtest.h>
 
 #include "backend/singularities/fixtures.h"

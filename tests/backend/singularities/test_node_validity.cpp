@@ -1,4 +1,4 @@
-// Table of hex-meshable node types (§5, verify/sphtri.py) and the boundary rule.
+// Table of hex-meshable node types and the boundary rule (docs/algorithms.md#node-validity).
 #include <gtest/gtest.h>
 
 #include "framefix/singularities/node_validity.h"

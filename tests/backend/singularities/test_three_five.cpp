@@ -1,4 +1,4 @@
-// 3-5 classification of label chains (section 0 §4.3).
+// 3-5 classification of label chains (docs/algorithms.md#3-5-detection).
 #include <gtest/gtest.h>
 
 #include "framefix/singularities/three_five.h"
@@ -38,7 +38,7 @@ TEST(ThreeFive, TwoTriangleTailIsA35Curve) {
 }
 
 TEST(ThreeFive, OneTriangleTailIsNot) {
-    // Known limit (section 0 §7.4): a 1-triangle minority tail is smoothed away.
+    // Known limit (docs/algorithms.md#3-5-detection): a 1-triangle minority tail is smoothed away.
     EXPECT_EQ(classify_labels(run({{5, 20}, {3, 1}}), false, 5).kind, CurveKind::Valence5);
 }
 
