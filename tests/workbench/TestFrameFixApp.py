@@ -70,6 +70,32 @@ class MacroApi(unittest.TestCase):
             self.ff.analyze(two)
 
 
+class MacroApiRunner(unittest.TestCase):
+    """framefix.freecad runs its backend through the workbench's runner (framefix_wb.runs):
+    the same lookup, the same failure messages, as framefix.Error."""
+
+    def with_backend(self, name):
+        from ffworkbench_testing import FAKES
+        import framefix.freecad as ff
+        saved = os.environ.get("FRAMEFIX_BACKEND")
+        os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, name)
+        try:
+            return ff.analyze(Part.makeBox(1, 1, 1), size=0.5)
+        finally:
+            if saved is None:
+                os.environ.pop("FRAMEFIX_BACKEND")
+            else:
+                os.environ["FRAMEFIX_BACKEND"] = saved
+
+    def test_a_crash_is_the_workbenchs_message_as_framefix_error(self):
+        import framefix
+        with self.assertRaisesRegex(framefix.Error, r"crashed \(killed by SIGSEGV\).*unchanged"):
+            self.with_backend("segv.sh")
+
+    def test_the_found_backend_is_the_one_run(self):
+        self.assertEqual(self.with_backend("canned.py").summary["curves"], 3)
+
+
 class Objects(unittest.TestCase):
     """One analysis of the notch at the workbench's default size."""
 

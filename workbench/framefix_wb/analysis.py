@@ -5,6 +5,10 @@ from .make import (BLOCKS_GROUP_LABEL, CORRECTION_GROUP_LABEL, GROUP_LABEL,  # n
                    analyses_of, blocks_of, make_analysis, make_blocks, update_analysis)
 from .runs import block_mesh, input_digest, remember_block_mesh  # noqa: F401
 
+__all__ = ["BLOCKS_GROUP_LABEL", "CORRECTION_GROUP_LABEL", "GROUP_LABEL", "analyses_of",
+           "blocks_of", "make_analysis", "make_blocks", "update_analysis", "block_mesh",
+           "input_digest", "remember_block_mesh", "run_analysis"]
+
 
 def run_analysis(solid, size, backend=None, timeout=None, method=None, blocks=False):
     """runs.run with the arguments in their old order."""

@@ -52,17 +52,17 @@ class Blocks(ProxyBase):
         self.setup(obj)
 
     def execute(self, obj):
-        analysis = obj.Analysis
-        blocks = report_of(analysis)["blocks"]
+        curves = obj.Analysis
+        blocks = report_of(curves)["blocks"]
         if blocks is None:
-            raise FrameFixError("%s holds no block run" % analysis.Label)
-        if obj.MeshDigest != analysis.InputDigest:
-            mesh = runs.block_mesh(analysis.InputDigest)
+            raise FrameFixError("%s holds no block run" % curves.Label)
+        if obj.MeshDigest != curves.InputDigest:
+            mesh = runs.block_mesh(curves.InputDigest)
             if mesh is None:
                 raise FrameFixError("the tets of this block run are not in memory: change the "
-                                    "Size of %s or rerun FrameFix Blocks" % analysis.Label)
+                                    "Size of %s or rerun FrameFix Blocks" % curves.Label)
             obj.FemMesh = build_fem_mesh(mesh)
-            obj.MeshDigest = analysis.InputDigest
+            obj.MeshDigest = curves.InputDigest
             ids = mesh["block"].tolist()
         else:
             ids = list(obj.BlockIds)
