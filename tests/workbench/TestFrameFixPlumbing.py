@@ -1,6 +1,8 @@
 """Headless workbench plumbing with fake backends (run: freecadcmd -t TestFrameFixPlumbing
 -M workbench -M tests/workbench). The canned backend's curves are made up: these tests check
 that objects, reruns, undo and failures behave, never what the analysis finds."""
+import ast
+import json
 import os
 import tempfile
 import time
@@ -9,8 +11,8 @@ import unittest
 import FreeCAD
 import Part
 
-from framefix_wb import analysis, backend, job, report, runner, shapes, sizing
-from framefix_wb.errors import BackendError, SelectionError
+from framefix_wb import analysis, backend, info, job, make, report, runner, runs, shapes, sizing
+from framefix_wb.errors import BackendError, FrameFixError, SelectionError
 from framefix_wb.objects.properties import report_of
 
 from ffworkbench_testing import FAKES, alive
@@ -21,10 +23,27 @@ def use_backend(name):
     os.environ.pop("FRAMEFIX_PYTHONPATH", None)
 
 
+CANNED_INFO = {"version": 1, "default_target_tets": 50000, "mean_tet_volume_h3": 0.085,
+               "correction_methods": [{"name": "snap", "available": True, "description": "d"}],
+               "block_methods": ["snap", "none"]}
+
+
 class Pure(unittest.TestCase):
-    def test_default_size_gives_about_target_tets(self):
-        h = sizing.default_size(1.0)
-        self.assertAlmostEqual(sizing.estimate_tets(1.0, h) / sizing.TARGET_TETS, 1.0, delta=0.1)
+    def test_default_size_gives_the_target_tets(self):
+        i = info.check_info(CANNED_INFO)
+        h = sizing.default_size(1.0, i)
+        self.assertAlmostEqual(h, (1.0 / (0.085 * 50000)) ** (1 / 3))
+        self.assertAlmostEqual(sizing.estimate_tets(1.0, h, i), 50000)
+
+    def test_info_with_a_bad_field_is_rejected(self):
+        for key, bad in (("version", 2), ("default_target_tets", 0), ("block_methods", []),
+                         ("correction_methods", [{"name": "snap"}])):
+            with self.assertRaisesRegex(BackendError, key):
+                info.check_info(dict(CANNED_INFO, **{key: bad}))
+
+    def test_info_after_stderr_noise_is_read(self):
+        text = "warning: something\n" + json.dumps(CANNED_INFO) + "\n"
+        self.assertEqual(info.parse_info(text)["block_methods"], ["snap", "none"])
 
     def test_progress_lines(self):
         self.assertEqual(job.parse_progress("progress mesh 0.25\n"), ("mesh", 0.25))
@@ -48,6 +67,66 @@ class Pure(unittest.TestCase):
             "curves": [{"kind": "3-5", "points": [[0, 0, "x"]]}]}}
         with self.assertRaisesRegex(BackendError, r"curves\[0\]"):
             report.check_report(bad)
+
+
+class Layers(unittest.TestCase):
+    """objects/ (stored in documents) sits below the make layer, panels and commands."""
+
+    FORBIDDEN = ("make", "analysis", "taskpanels", "commands", "viewproviders")
+
+    def imported(self, path):
+        tree = ast.parse(open(path).read())
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom):
+                yield from ((node.module or "").split(".") + [a.name for a in node.names])
+            elif isinstance(node, ast.Import):
+                yield from (p for a in node.names for p in a.name.split("."))
+
+    def test_proxies_import_no_layer_above_them(self):
+        folder = os.path.join(os.path.dirname(runs.__file__), "objects")
+        for name in sorted(os.listdir(folder)):
+            if name.endswith(".py"):
+                bad = set(self.imported(os.path.join(folder, name))) & set(self.FORBIDDEN)
+                self.assertEqual(bad, set(), name)
+
+    def test_make_recognises_proxies_by_class(self):
+        class Fake:  # an object whose proxy class is only named like one
+            Proxy = type("Blocks", (), {})()
+        self.assertIsNone(make.blocks_of(type("Curves", (), {"InList": [Fake()]})()))
+
+
+class BackendInfo(unittest.TestCase):
+    def test_canned_info_is_read_once_per_backend(self):
+        use_backend("canned.py")
+        first = runs.backend_info()
+        self.assertIs(runs.backend_info(), first)
+        self.assertEqual([m["name"] for m in first["correction_methods"]],
+                         ["snap", "fillet", "extrude-curves", "extrude-nodes"])
+        self.assertEqual(first["block_methods"], ["snap", "none"])
+        self.assertEqual(first["default_target_tets"], 50000)
+
+    def test_backend_without_info_is_a_clear_error(self):
+        for fake in ("reject.sh", "garbage.sh", "segv.sh"):
+            use_backend(fake)
+            with self.assertRaisesRegex(BackendError, "framefix info"):
+                runs.backend_info()
+
+    def test_canned_backend_refuses_what_its_info_does_not_offer(self):
+        use_backend("canned.py")
+        methods = runs.backend_info()["correction_methods"]
+        self.assertIn(False, [m["available"] for m in methods])
+        for m in methods:
+            j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, method=m["name"])
+            try:
+                if m["available"]:
+                    self.assertEqual(runner.run_sync(j)["correction"]["method"], m["name"])
+                else:
+                    with self.assertRaisesRegex(BackendError, "rejected the input in stage "
+                                                "correct: method '%s' is not available yet"
+                                                % m["name"]):
+                        runner.run_sync(j)
+            finally:
+                j.cleanup()
 
 
 class Selection(unittest.TestCase):
@@ -251,11 +330,19 @@ class Objects(unittest.TestCase):
         analysis.make_analysis(self.box, 0.5, method="snap")
         self.assertEqual(len(self.doc.getObject("SnappedPaths").Shape.Edges), 1)
 
-    def test_changing_the_method_reruns_with_it(self):
+    def test_unavailable_method_is_refused_before_running(self):
         curves = analysis.make_analysis(self.box, 0.5, method="snap")
         curves.Method = "fillet"
         self.doc.recompute()
-        self.assertEqual(report_of(curves)["correction"]["method"], "fillet")
+        self.assertFalse(curves.isValid())
+        self.assertIn("not available yet", curves.getStatusString())
+        self.assertEqual(self.run_count(), 1)
+        self.assertEqual(report_of(curves)["correction"]["method"], "snap")
+
+    def test_unavailable_method_is_refused_by_make_too(self):
+        with self.assertRaisesRegex(FrameFixError, "'extrude-nodes' is not available yet"):
+            analysis.make_analysis(self.box, 0.5, method="extrude-nodes")
+        self.assertEqual(self.run_count(), 0)
 
     def test_unknown_method_is_an_error_on_the_object_only(self):
         curves = analysis.make_analysis(self.box, 0.5, method="snap")
@@ -304,7 +391,7 @@ class BlocksPlumbing(unittest.TestCase):
         self.assertEqual(report.blocks_text(b), "7 blocks, 6 valid, 9/10 pairs conforming, 1 flat edge")
 
     def test_blocks_job_command_line_and_progress(self):
-        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, blocks=True)
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, method="snap", blocks=True)
         try:
             self.assertEqual(j.argv[-2:], ["--method", "snap"])
             self.assertIn("blocks", j.argv)
@@ -333,6 +420,16 @@ class BlocksPlumbing(unittest.TestCase):
         self.assertEqual(blocks.Analysis.Curves35, 1)
         self.assertIsNone(self.doc.getObject("SnappedPaths"))
 
+    def test_changing_the_method_reruns_with_it(self):
+        blocks = analysis.make_blocks(self.box, 0.5)
+        curves = blocks.Analysis
+        curves.Method = "none"
+        self.doc.recompute()
+        self.assertTrue(blocks.isValid())
+        self.assertIsNone(report_of(curves)["correction"])
+        self.assertEqual(curves.Curves35, 1)
+        self.assertEqual(blocks.MeshDigest, curves.InputDigest)
+
     def test_changing_the_size_reruns_and_rebuilds_the_mesh(self):
         blocks = analysis.make_blocks(self.box, 0.5)
         curves = blocks.Analysis
@@ -354,7 +451,7 @@ class BlocksPlumbing(unittest.TestCase):
         path = os.path.join(tempfile.mkdtemp(), "blocks.FCStd")
         self.doc.saveAs(path)
         FreeCAD.closeDocument(self.doc.Name)
-        analysis._BLOCK_MESHES.clear()
+        runs.forget_block_meshes()
         self.doc = FreeCAD.openDocument(path)
         blocks = self.doc.getObject("Blocks")
         blocks.touch()

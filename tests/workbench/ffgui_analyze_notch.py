@@ -9,6 +9,7 @@ from ffworkbench_testing import notch_document
 
 
 def scenario(h):
+    from framefix_wb.objects.snapped_paths import SnappedPaths
     from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
     FreeCADGui.activateWorkbench("FrameFixWorkbench")
     doc, part = notch_document()
@@ -58,8 +59,7 @@ def scenario(h):
     h.check(corrected.Before35 == 1 and corrected.Curves35 == 0,
             "snapping removes the notch's 3-5 curve: %d before, %d after"
             % (corrected.Before35, corrected.Curves35))
-    paths = [o for o in corrected.InList
-             if type(getattr(o, "Proxy", None)).__name__ == "SnappedPaths"]
+    paths = [o for o in corrected.InList if isinstance(getattr(o, "Proxy", None), SnappedPaths)]
     h.check(len(paths) == 1 and len(paths[0].Shape.Edges) > 0,
             "the snapped path is shown on the boundary")
     curves.getParentGroup().ViewObject.Visibility = False

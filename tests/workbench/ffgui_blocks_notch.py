@@ -17,8 +17,9 @@ DOCS_SHOT = os.path.join(REPO, "docs", "screenshot_blocks.png")
 
 
 def scenario(h):
-    from framefix_wb import analysis
+    from framefix_wb import make
     from framefix_wb.objects.properties import report_of
+    from framefix_wb.objects.snapped_paths import SnappedPaths
     from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
     FreeCADGui.activateWorkbench("FrameFixWorkbench")
     doc, part = notch_document()
@@ -37,15 +38,16 @@ def scenario(h):
     yield h.until(lambda: not panel.runner.is_running(), 600, "the backend to finish")
     yield 0.5
     curves = panel.analysis
-    blocks = analysis.blocks_of(curves) if curves is not None else None
+    blocks = make.blocks_of(curves) if curves is not None else None
     h.check(blocks is not None and blocks.isValid(), "Blocks object exists: %s"
             % panel.form.summary.text())
     if blocks is None:
         return
     report = report_of(curves)
     count = report["blocks"]["count"]
-    h.check(blocks.Count >= 1 and blocks.Count == count,
-            "block count %d equals the report's %d" % (blocks.Count, count))
+    h.check(blocks.Count == 7 and blocks.Count == count,
+            "the notch cuts into 7 blocks after snapping: %d (the report: %d)"
+            % (blocks.Count, count))
     tets = blocks.FemMesh.VolumeCount
     h.check(tets > 0 and len(blocks.BlockIds) == tets == int(report["mesh"]["tets"]),
             "one block id per tet: %d ids, %d volumes, %s tets in the report"
@@ -54,7 +56,7 @@ def scenario(h):
     h.check(coloured == tets, "every tet coloured: %d colours" % coloured)
     h.check(blocks.Summary in panel.form.summary.text(), "summary in the panel: " + blocks.Summary)
     h.check(curves.Curves35 == 0, "the corrected curves have no 3-5 curve")
-    paths = [o for o in curves.InList if type(getattr(o, "Proxy", None)).__name__ == "SnappedPaths"]
+    paths = [o for o in curves.InList if isinstance(getattr(o, "Proxy", None), SnappedPaths)]
     h.check(len(paths) == 1 and len(paths[0].Shape.Edges) > 0, "snapped paths shown")
     h.button(QtWidgets.QDialogButtonBox.Ok).click()
     yield h.until(lambda: AnalyzePanel.active is None, 10, "OK to close the panel")

@@ -21,6 +21,7 @@ def scenario(h):
     from framefix_wb.shapes import shape_digest
     from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
     FreeCADGui.activateWorkbench("FrameFixWorkbench")
+    os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, "canned.py")  # its `info` sizes the part
     doc = FreeCAD.newDocument("CrashSafety")
     doc.UndoMode = 1
     part = doc.addObject("Part::Feature", "Part")

@@ -7,7 +7,7 @@ import tempfile
 
 import FreeCAD
 import FreeCADGui
-from PySide2 import QtWidgets
+from PySide2 import QtCore, QtWidgets
 
 import ffgui_harness
 
@@ -78,6 +78,34 @@ def scenario(h):
     h.check(part.ViewObject.Transparency == transparency,
             "deleting the curves restores the part's transparency")
     os.unlink(log)
+
+    # The Correct panel lists the backend's methods (canned `info`), unavailable ones greyed.
+    doc = FreeCAD.newDocument("Methods")
+    part = doc.addObject("Part::Box", "Box")
+    doc.recompute()
+    FreeCADGui.Selection.addSelection(part)
+    FreeCADGui.runCommand("FrameFix_Correct")
+    yield 0.3
+    box = AnalyzePanel.active.form.method
+    items = [(box.itemData(i), box.model().item(i).isEnabled(),
+              box.itemData(i, QtCore.Qt.ToolTipRole)) for i in range(box.count())]
+    h.check([(n, e) for n, e, _ in items] == [("snap", True), ("fillet", False),
+                                              ("extrude-curves", False), ("extrude-nodes", False)],
+            "Correct lists the backend's methods, unavailable ones disabled: %s" % items)
+    h.check(all(tip for _, _, tip in items), "each method shows its description")
+    h.check(box.currentData() == "snap", "snap chosen")
+    FreeCADGui.Control.closeDialog()
+    yield 0.3
+    # A backend without `info` (an older one): the panel says so, and still opens.
+    os.environ["FRAMEFIX_BACKEND"] = os.path.join(FAKES, "reject.sh")
+    FreeCADGui.runCommand("FrameFix_Correct")
+    yield 0.3
+    panel = AnalyzePanel.active
+    text = panel.form.summary.text() if panel is not None else ""
+    h.check("does not answer `framefix info`" in text, "no info: the panel says so: %s" % text)
+    h.check(panel is not None and panel.form.estimate.text() == "", "no info: no estimate")
+    FreeCADGui.Control.closeDialog()
+    yield 0.3
 
 
 ffgui_harness.run(scenario)

@@ -1,4 +1,5 @@
-"""FrameFix workbench package.
+"""FrameFix workbench package, layered like Draft: runs.py (and its leaf helpers), objects/,
+make.py, then taskpanels/ and commands/ (workbench/README.md).
 
 Everything outside commands/, taskpanels/ and viewproviders/ imports without the GUI, so
 freecadcmd and macros can build the analysis objects. The backend always runs as a child

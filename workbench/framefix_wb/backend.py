@@ -1,6 +1,7 @@
 """Finding the FrameFix backend (the `framefix` CLI) this workbench runs as a child process.
 
-Order, first match wins:
+The one lookup order of the project: the workbench and the macro API (framefix.freecad,
+through runs.py) both call find_backend(). Order, first match wins:
  1. FRAMEFIX_BACKEND: path of a `framefix` executable (or any program with its CLI);
     FRAMEFIX_PYTHONPATH alone: a folder holding the `framefix` package, run with
     `/usr/bin/python3 -m framefix`. An explicit variable beats everything so a user (or a

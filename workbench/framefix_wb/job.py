@@ -1,6 +1,6 @@
 """One backend run: its temporary folder, command line, progress parsing and outcome.
 
-Both runners (runner.run_sync headless, gui_runner.ProcessRunner in the GUI) drive an
+Both runners (runner.run_sync headless, taskpanels.process_runner.ProcessRunner in the GUI) drive an
 AnalysisJob the same way: start `job.argv` with `job.env`, feed every output line to
 `job.add_line`, then call `job.finish(exit_code, crashed)` for the checked report.
 The user's shape only ever leaves FreeCAD as a BREP file in the job's own temp folder.
@@ -63,30 +63,25 @@ def timeout_from_env(default=DEFAULT_TIMEOUT_S):
         return default
 
 
-METHODS = ("snap", "fillet", "extrude-curves", "extrude-nodes")  # `framefix correct --method`
-AVAILABLE_METHODS = ("snap",)  # the backend refuses the others (exit 2, "not available yet")
-BLOCK_METHODS = ("snap", "none")  # `framefix blocks --method`: the correction before the cut
 BLOCKS_VTK = "blocks.vtk"  # the tets labelled by block, beside report.json
 
 
 class AnalysisJob:
     """`framefix analyze <tmp>/shape.brep [--size H] --out <tmp>/out` for one shape, or with
     `method`, `framefix correct ... --method M` (analyze, correct, analyze again), or with
-    `blocks`, `framefix blocks ... --method snap|none` (and the block mesh in the report)."""
+    `blocks`, `framefix blocks ... [--method M]` (and the block mesh in the report). The
+    methods are the backend's to check (runs.check_method asks it first). `out_dir`: where
+    the backend writes (kept), else a folder in the job's temporary one."""
 
-    def __init__(self, shape, size=None, backend=None, timeout=None, method=None, blocks=False):
+    def __init__(self, shape, size=None, backend=None, timeout=None, method=None, blocks=False,
+                 out_dir=None):
         self.backend = backend or find_backend()
         self.timeout = timeout_from_env() if timeout is None else float(timeout)
         self.workdir = tempfile.mkdtemp(prefix="framefix_")
         self.brep_path = os.path.join(self.workdir, "shape.brep")
-        self.out_dir = os.path.join(self.workdir, "out")
-        os.mkdir(self.out_dir)
+        self.out_dir = out_dir or os.path.join(self.workdir, "out")
+        os.makedirs(self.out_dir, exist_ok=True)
         shape.exportBrep(self.brep_path)
-        if blocks:
-            method = method or BLOCK_METHODS[0]
-            if method not in BLOCK_METHODS:
-                raise BackendError("blocks: unknown correction %r: use one of %s"
-                                   % (method, ", ".join(BLOCK_METHODS)))
         self.command = command = "blocks" if blocks else "correct" if method else "analyze"
         self.argv = self.backend.argv + [command, self.brep_path, "--out", self.out_dir]
         if size:

@@ -1,4 +1,4 @@
-"""Reading the backend's report.json (version 1, see DESIGN.md) into checked plain data.
+"""Reading the backend's report.json (version 1, its fields in docs/design.md) into checked data.
 
 The report comes from a child process that may have died half-way or printed garbage: every
 field the workbench uses is checked here, once, and a bad report becomes a BackendError that

@@ -1,4 +1,5 @@
-"""Running an AnalysisJob synchronously in a child process (freecadcmd, macros, recompute).
+"""Running a job (job.AnalysisJob, info.InfoJob) synchronously in a child process: freecadcmd,
+recomputes, framefix.freecad macros; the GUI panel uses taskpanels/process_runner.py instead.
 
 The child gets its own session so a timeout or cancel kills it and anything it started.
 `on_progress(stage, fraction)` and `on_idle()` are called from this thread only; the GUI

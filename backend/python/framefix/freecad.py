@@ -6,16 +6,17 @@
 
 The backend runs as a child process (the `framefix` CLI) on a BREP export of the solid, in a
 temporary folder: a crash of the mesher cannot take FreeCAD down, and the user's shape is
-never modified. The CLI is FRAMEFIX_BACKEND if set, else bin/framefix beside this package
-(build tree and installed workbench alike), else `/usr/bin/python3 -m framefix`.
-Failures raise framefix.Error with the backend's message.
+never modified. Failures raise framefix.Error with the backend's message.
+
+Finding and running the backend is the workbench's (framefix_wb.runs, lookup order in
+framefix_wb/backend.py), shared with it rather than copied: one lookup order, one runner.
+It lives in the workbench, not here, because this package imports its compiled extension
+(_core) on import, while the workbench must run any backend, even a plain executable
+(FRAMEFIX_BACKEND) with no Python package beside it. framefix_wb needs no extension and is
+on FreeCAD's path whenever the workbench is installed, the only place this module runs.
 """
-import json
 import os
-import shutil
-import signal
-import subprocess
-import tempfile
+import sys
 
 import numpy as np
 
@@ -50,7 +51,7 @@ class Node:
 
 
 class Result:
-    """One analysis: `report` is report.json as a dict (DESIGN.md, version 1)."""
+    """One analysis: `report` is report.json as a dict (version 1, docs/design.md)."""
 
     def __init__(self, report, out_dir=None):
         self.report = report
@@ -82,55 +83,27 @@ def solid_of(obj_or_shape):
     return solids[0].copy()  # a copy without the display mesh, so the BREP is the geometry only
 
 
-def backend_command():
-    """The argv prefix of the CLI to run and the environment it needs."""
-    env = dict(os.environ)
-    exe = os.environ.get("FRAMEFIX_BACKEND") or os.path.join(
-        os.path.dirname(os.path.dirname(_PACKAGE_DIR)), "bin", "framefix")
-    if os.path.isfile(exe) and os.access(exe, os.X_OK):
-        return [exe], env
-    env["PYTHONPATH"] = os.pathsep.join(
-        p for p in (os.path.dirname(_PACKAGE_DIR), env.get("PYTHONPATH")) if p)
-    return ["/usr/bin/python3", "-m", "framefix"], env
-
-
-def _run(argv, env, timeout, progress):
-    proc = subprocess.Popen(argv, env=env, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, start_new_session=True)
+def _workbench_runs():
+    """framefix_wb.runs: FreeCAD puts the installed workbench on sys.path; otherwise look
+    beside this package (installed: <Mod/FrameFix>/python/framefix -> <Mod/FrameFix>; build
+    or source tree: <repo>/build/python/framefix or <repo>/backend/python/framefix ->
+    <repo>/workbench)."""
     try:
-        lines = _read_stderr(proc, timeout, progress)
-    finally:
-        try:
-            os.killpg(proc.pid, signal.SIGKILL)  # what the backend may have left running
-        except (ProcessLookupError, PermissionError):
-            pass
-        proc.wait()
-    return proc.returncode, lines
-
-
-def _read_stderr(proc, timeout, progress):
-    import threading
-    lines = []
-
-    def read():
-        for raw in proc.stderr:
-            line = raw.decode("utf-8", "replace").rstrip()
-            lines.append(line)
-            parts = line.split()
-            if progress and len(parts) == 3 and parts[0] == "progress":
-                try:
-                    progress(parts[1], float(parts[2]))
-                except ValueError:
-                    pass
-
-    reader = threading.Thread(target=read, daemon=True)
-    reader.start()
-    try:
-        proc.wait(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        raise Error("freecad: the backend did not finish within %.0f s" % timeout) from None
-    reader.join(5.0)
-    return lines
+        from framefix_wb import runs
+        return runs
+    except ImportError:
+        pass
+    up2 = os.path.dirname(os.path.dirname(_PACKAGE_DIR))
+    for path in (up2, os.path.join(os.path.dirname(up2), "workbench")):
+        if os.path.isdir(os.path.join(path, "framefix_wb")) and path not in sys.path:
+            sys.path.append(path)
+            try:
+                from framefix_wb import runs
+                return runs
+            except ImportError:
+                sys.path.remove(path)
+    raise Error("freecad: the FrameFix workbench (framefix_wb) is not installed: it runs the "
+                "backend (cmake --install build)")
 
 
 def analyze(obj_or_shape, size=None, out=None, timeout=DEFAULT_TIMEOUT_S, progress=None):
@@ -138,27 +111,11 @@ def analyze(obj_or_shape, size=None, out=None, timeout=DEFAULT_TIMEOUT_S, progre
     None for about 50k tets. `out`: a folder to keep the report and VTK files in.
     `progress(stage, fraction)` is called for each progress line of the backend."""
     solid = solid_of(obj_or_shape)
-    workdir = tempfile.mkdtemp(prefix="framefix_")
+    runs = _workbench_runs()
+    from framefix_wb.errors import FrameFixError
     try:
-        brep = os.path.join(workdir, "shape.brep")
-        solid.exportBrep(brep)
-        out_dir = os.path.abspath(out) if out else os.path.join(workdir, "out")
-        os.makedirs(out_dir, exist_ok=True)
-        prefix, env = backend_command()
-        argv = prefix + ["analyze", brep, "--out", out_dir]
-        if size:
-            argv += ["--size", repr(float(size))]
-        code, lines = _run(argv, env, timeout, progress)
-        if code != 0:
-            errors = [l for l in lines if l.startswith("framefix:")] or lines[-3:]
-            what = ("crashed (%s)" % signal.Signals(-code).name if code < 0
-                    else "failed (exit code %d)" % code)
-            raise Error("freecad: the backend %s: %s" % (what, " | ".join(errors) or "no message"))
-        try:
-            with open(os.path.join(out_dir, "report.json"), encoding="utf-8") as f:
-                report = json.load(f)
-            return Result(report, out_dir if out else None)
-        except (OSError, ValueError, KeyError, TypeError) as e:
-            raise Error("freecad: the backend's report.json is unusable: %s" % e) from None
-    finally:
-        shutil.rmtree(workdir, ignore_errors=True)
+        report = runs.run(solid, size, timeout=timeout, on_progress=progress,
+                          out_dir=os.path.abspath(out) if out else None)
+    except FrameFixError as e:
+        raise Error("freecad: %s" % e) from None
+    return Result(report["raw"], os.path.abspath(out) if out else None)

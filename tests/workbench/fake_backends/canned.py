@@ -4,6 +4,8 @@
 NOT an oracle: its curves are made up. FAKE_BACKEND_LOG (if set) gets one line per run, so
 tests can count reruns; FAKE_BACKEND_DELAY slows the progress lines down (seconds each).
 `blocks` cuts the unit cube's 6 Kuhn tets into 2 made-up blocks (block 1 invalid).
+`info` prints INFO (the contract of the real `framefix info`); `correct` and `blocks` refuse,
+as the real backend does, every method INFO does not offer as available.
 """
 import json
 import os
@@ -14,6 +16,36 @@ import time
 # the unit cube's corners (bit 0: x, 1: y, 2: z) and its 6 Kuhn tets around the diagonal 0-7
 CUBE = [[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)]
 KUHN = [[0, 1, 3, 7], [0, 3, 2, 7], [0, 2, 6, 7], [0, 6, 4, 7], [0, 4, 5, 7], [0, 5, 1, 7]]
+
+
+INFO = {
+    "version": 1, "default_target_tets": 50000, "mean_tet_volume_h3": 0.085,
+    "correction_methods": [
+        {"name": "snap", "available": True,
+         "description": "snap 3-5 curves onto the boundary (the paper's recommendation)"},
+        {"name": "fillet", "available": False,
+         "description": "round the edges the 3-5 curves end on"},
+        {"name": "extrude-curves", "available": False,
+         "description": "extrude feature curves to move the 3-5 curves away"},
+        {"name": "extrude-nodes", "available": False,
+         "description": "extrude around invalid singular nodes"}],
+    "block_methods": ["snap", "none"]}
+
+
+def refusal(command, method):
+    """The real backend's message for a method it does not run (None: it runs it)."""
+    if command == "blocks":
+        names = INFO["block_methods"]
+    else:
+        offered = {m["name"]: m for m in INFO["correction_methods"]}
+        names = list(offered)
+        if method in offered and not offered[method]["available"]:
+            return ("framefix: error [correct]: method '%s' is not available yet; use one of %s"
+                    % (method, ", ".join(n for n in names if offered[n]["available"])))
+    if method not in names:
+        return "framefix: error [cli]: unknown method '%s'; use one of %s" % (
+            method, ", ".join(names))
+    return None
 
 
 def write_blocks(report, out):
@@ -39,6 +71,9 @@ def write_blocks(report, out):
 
 
 def main(argv):
+    if argv[:1] == ["info"]:
+        print(json.dumps(INFO, indent=1))
+        return 0
     if len(argv) < 4 or argv[0] not in ("analyze", "correct", "blocks") or "--out" not in argv:
         print("framefix: error [cli]: usage: framefix analyze|correct|blocks PART [--size H] "
               "[--method M] --out DIR", file=sys.stderr)
@@ -55,6 +90,10 @@ def main(argv):
     stages = ["load", "mesh", "field", "singularities"]
     method = argv[argv.index("--method") + 1] if "--method" in argv else (
         "snap" if argv[0] != "analyze" else "")
+    refused = refusal(argv[0], method) if argv[0] != "analyze" else None
+    if refused:
+        print(refused, file=sys.stderr)
+        return 2
     if argv[0] == "blocks":
         stages += ["correct", "blocks"] if method != "none" else ["blocks"]
     for stage in stages:

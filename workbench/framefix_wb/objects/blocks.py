@@ -2,9 +2,10 @@
 of each tet. A Fem::FemMeshObjectPython: FemMesh holds the tets (element i + 1 is tet i),
 BlockIds their blocks, BlockValid the blocks' validity; the view provider colours the
 elements by block. The run (and its report) belongs to the curves object in Analysis; the
-tet mesh of a new run comes from analysis.block_mesh() in the recompute after it, and is
+tet mesh of a new run comes from runs.block_mesh() in the recompute after it, and is
 saved with the document (MeshDigest: the run it belongs to).
 """
+from .. import runs
 from ..errors import FrameFixError
 from ..report import blocks_text
 from .properties import HIDDEN, READ_ONLY, ProxyBase, add, report_of
@@ -51,18 +52,17 @@ class Blocks(ProxyBase):
         self.setup(obj)
 
     def execute(self, obj):
-        from ..analysis import block_mesh
-        analysis = obj.Analysis
-        blocks = report_of(analysis)["blocks"]
+        curves = obj.Analysis
+        blocks = report_of(curves)["blocks"]
         if blocks is None:
-            raise FrameFixError("%s holds no block run" % analysis.Label)
-        if obj.MeshDigest != analysis.InputDigest:
-            mesh = block_mesh(analysis.InputDigest)
+            raise FrameFixError("%s holds no block run" % curves.Label)
+        if obj.MeshDigest != curves.InputDigest:
+            mesh = runs.block_mesh(curves.InputDigest)
             if mesh is None:
                 raise FrameFixError("the tets of this block run are not in memory: change the "
-                                    "Size of %s or rerun FrameFix Blocks" % analysis.Label)
+                                    "Size of %s or rerun FrameFix Blocks" % curves.Label)
             obj.FemMesh = build_fem_mesh(mesh)
-            obj.MeshDigest = analysis.InputDigest
+            obj.MeshDigest = curves.InputDigest
             ids = mesh["block"].tolist()
         else:
             ids = list(obj.BlockIds)

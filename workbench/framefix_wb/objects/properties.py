@@ -16,9 +16,9 @@ def add(obj, kind, name, group, doc, mode=0, default=None):
         obj.setEditorMode(name, mode)
 
 
-def report_of(analysis):
+def report_of(curves):
     """The checked report stored on a SingularCurves object (raises BackendError if bad)."""
-    return check_report(json.loads(analysis.Report or "null"))
+    return check_report(json.loads(curves.Report or "null"))
 
 
 class ProxyBase:

@@ -2,17 +2,10 @@
 feature curves objects read the report from it. With a Method it is a correction: the
 backend runs `correct --method M` and the curves are those after the correction.
 
-Recompute reruns the backend only when the analysed solid or the size changed (InputDigest),
-so results applied from the task panel are not computed twice.
+Recompute reruns the backend only when the analysed solid, size or method changed
+(runs.refresh), so results applied from the task panel are not computed twice.
 """
-import json
-
-import FreeCAD
-
-from .. import geometry, shapes, sizing, style
-from ..errors import FrameFixError
-from ..job import BLOCK_METHODS, METHODS
-from ..report import run_text
+from .. import geometry, runs, style
 from .properties import HIDDEN, READ_ONLY, ProxyBase, add, report_of
 
 SUMMARY_PROPERTIES = (
@@ -30,13 +23,12 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyLink", "Source", "FrameFix",
             "The analysed solid; editing it marks this analysis for recompute")
         add(obj, "App::PropertyLength", "Size", "FrameFix",
-            "Target tet edge length (model units); 0: the backend's default, about %d tets"
-            % sizing.TARGET_TETS)
+            "Target tet edge length (model units); 0: the backend's default size")
         add(obj, "App::PropertyString", "Method", "FrameFix",
-            "Correction method (%s); empty: an analysis" % ", ".join(METHODS))
+            "Correction method (the backend lists them: framefix info); empty: an analysis")
         add(obj, "App::PropertyBool", "Blocks", "FrameFix",
-            "The run also cuts the part into blocks (framefix blocks); Method: %s"
-            % " or ".join(BLOCK_METHODS), READ_ONLY)
+            "The run also cuts the part into blocks (framefix blocks); Method: the correction "
+            "before the cut", READ_ONLY)
         add(obj, "App::PropertyInteger", "Before35", "Summary",
             "3-5 curves before the correction", READ_ONLY)
         self.show_method(obj)
@@ -71,20 +63,7 @@ class SingularCurves(ProxyBase):
             self.show_method(obj)
 
     def execute(self, obj):
-        from ..analysis import input_digest, run_analysis
-        solid = shapes.solid_of(obj.Source)
-        size = obj.Size.Value or None  # 0: the backend's default
-        methods = BLOCK_METHODS if obj.Blocks else METHODS
-        if (obj.Method or obj.Blocks) and obj.Method not in methods:
-            raise FrameFixError("unknown correction method %r: use one of %s"
-                                % (obj.Method, ", ".join(methods)))
-        digest = input_digest(solid, size, obj.Method, obj.Blocks)
-        if digest != obj.InputDigest or not obj.Report:
-            report = run_analysis(solid, size, method=obj.Method or None, blocks=obj.Blocks)
-            obj.Report = json.dumps(report["raw"])
-            obj.InputDigest = digest
-            FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (
-                obj.Source.Label, run_text(report)))
+        runs.refresh(obj)
         report = report_of(obj)
         shape, codes, owners = geometry.polylines(
             report["curves"], lambda c: style.CURVE_KIND_CODES.get(c["kind"], style.OTHER_KIND))

@@ -6,15 +6,14 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
-from ..job import AVAILABLE_METHODS, BLOCK_METHODS, METHODS
 from ..report import blocks_text, curve_breakdown
 
 
 class AnalyzeForm(QtWidgets.QWidget):
-    """`method` given: the Correct panel, with a method choice; `blocks`: the Blocks panel
-    (method snap or none)."""
+    """`methods` given, [(name, available, description)]: a method choice, `method` chosen
+    (the Correct and Blocks panels); unavailable ones are listed greyed out."""
 
-    def __init__(self, method=None, blocks=False):
+    def __init__(self, methods=(), method=None, blocks=False):
         super().__init__()
         name = "Blocks" if blocks else "Correct" if method else "Analyze"
         self.setWindowTitle("FrameFix " + name)
@@ -32,28 +31,15 @@ class AnalyzeForm(QtWidgets.QWidget):
         self.size.setToolTip("Target tet edge length, in model units")
         grid.addWidget(self.size, 0, 1)
         self.auto = QtWidgets.QCheckBox("Automatic")
-        self.auto.setToolTip("Let the backend choose the size: about %d tets" % sizing.TARGET_TETS)
+        self.auto.setToolTip("Let the backend choose the size")
         self.auto.setChecked(True)
         grid.addWidget(self.auto, 0, 2)
         self.estimate = QtWidgets.QLabel()
         grid.addWidget(self.estimate, 1, 1, 1, 2)
         self.method = None
-        if method:
+        if methods:
             grid.addWidget(QtWidgets.QLabel("Method"), 2, 0)
-            self.method = QtWidgets.QComboBox()
-            for name in BLOCK_METHODS if blocks else METHODS:
-                self.method.addItem(name, name)  # the data is the method, whatever the text says
-            if not blocks:  # the paper's other methods: listed, greyed out until the backend has them
-                for i, name in enumerate(METHODS):
-                    if name not in AVAILABLE_METHODS:
-                        self.method.setItemText(i, name + " (not yet available)")
-                        self.method.model().item(i).setEnabled(False)
-            self.method.setCurrentIndex(max(0, self.method.findData(method)))
-            self.method.setToolTip(
-                "Correction before cutting: snap moves 3-5 curves onto the boundary; none cuts "
-                "the field as it is" if blocks else
-                "snap: move 3-5 curves onto the boundary (the paper's recommended approach); "
-                "fillet, extrude-curves and extrude-nodes are not available yet")
+            self.method = self._method_box(methods, method)
             grid.addWidget(self.method, 2, 1, 1, 2)
         layout.addLayout(grid)
         self.bar = QtWidgets.QProgressBar()
@@ -78,6 +64,23 @@ class AnalyzeForm(QtWidgets.QWidget):
         layout.addWidget(self.log)
         self.pending = collections.deque(maxlen=300)  # backend output not yet in the log
 
+    @staticmethod
+    def _method_box(methods, chosen):
+        box = QtWidgets.QComboBox()
+        tips = []
+        for i, (name, available, description) in enumerate(methods):
+            box.addItem(name if available else name + " (not yet available)", name)
+            box.setItemData(i, description, QtCore.Qt.ToolTipRole)
+            box.model().item(i).setEnabled(available)
+            tips.append("%s: %s%s" % (name, description or "-", "" if available else
+                                      " (not yet available)"))
+        box.setCurrentIndex(max(0, box.findData(chosen)))
+        box.setToolTip("\n".join(tips))
+        return box
+
+    def show_target(self, target_tets):
+        self.auto.setToolTip("Let the backend choose the size: about %d tets" % target_tets)
+
     def show_part(self, label, volume, diagonal):
         self.part_label.setText("Part: <b>%s</b> &mdash; volume %.4g, bounding box diagonal "
                                 "%.4g" % (html.escape(label), volume, diagonal))
@@ -85,11 +88,12 @@ class AnalyzeForm(QtWidgets.QWidget):
     def show_no_part(self, accepted):
         self.part_label.setText("Part: <i>select one solid (%s)</i>" % html.escape(accepted))
 
-    def show_estimate(self, volume):
-        if volume <= 0:
+    def show_estimate(self, volume, info):
+        """The tet estimate (`info`: the backend's `framefix info`; None: no estimate)."""
+        if volume <= 0 or info is None:
             self.estimate.setText("")
             return
-        tets = sizing.estimate_tets(volume, self.size.value())
+        tets = sizing.estimate_tets(volume, self.size.value(), info)
         warn = " <b>(large: may take minutes)</b>" if tets > 2e6 else ""
         self.estimate.setText("\u2248 {:,.0f} tets (estimate){}".format(
             float("%.2g" % tets), warn))

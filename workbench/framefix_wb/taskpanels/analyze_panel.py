@@ -10,8 +10,8 @@ import FreeCAD
 import FreeCADGui
 from PySide2 import QtCore, QtWidgets
 
-from .. import analysis, shapes, sizing
-from ..errors import FrameFixError
+from .. import make, runs, shapes, sizing
+from ..errors import BackendError, FrameFixError
 from ..job import AnalysisJob
 from ..report import run_text
 from .analyze_form import AnalyzeForm
@@ -50,7 +50,11 @@ class AnalyzePanel:
         if analysis_obj is not None:
             blocks = bool(getattr(analysis_obj, "Blocks", False))
         self.blocks = blocks  # the Blocks panel: `framefix blocks`, method snap or none
-        self.form = f = AnalyzeForm(method or ("snap" if blocks else None), blocks)
+        method = method or ("snap" if blocks else None)
+        self.info, info_error = self._backend_info()
+        self.form = f = AnalyzeForm(self._methods(method), method, blocks)
+        if self.info is not None:
+            f.show_target(self.info["default_target_tets"])
         f.size.valueChanged.connect(self._update_estimate)
         f.auto.toggled.connect(self._reset_size)
         self.runner.lines.connect(f.queue_output)
@@ -60,8 +64,8 @@ class AnalyzePanel:
             if analysis_obj.Size.Value > 0:
                 f.size.setValue(analysis_obj.Size.Value)
             self.last = (analysis_obj.Source.Name, self.chosen_size(), self.chosen_method())
-        if message:
-            self._show_error(message)
+        if message or info_error:
+            self._show_error("; ".join(m for m in (message, info_error) if m))
         self.ticker = QtCore.QTimer(self.form)  # dies with the form, however it is closed
         self.ticker.timeout.connect(self._tick)
         self.ticker.start(250)
@@ -74,6 +78,28 @@ class AnalyzePanel:
     def clicked(self, button):
         if button == QtWidgets.QDialogButtonBox.Apply:
             self.apply()
+
+    @staticmethod
+    def _backend_info():
+        """(`framefix info`, None) or (None, why there is none): the panel still runs then,
+        without a size estimate, the backend checking the method itself."""
+        try:
+            return runs.backend_info(), None
+        except BackendError as e:
+            return None, str(e)
+
+    def _methods(self, method):
+        """[(name, available, description)] for the method box; [] for Analyze."""
+        if not method:
+            return []
+        if self.info is None:
+            return [(method, True, "the backend did not list its methods")]
+        described = {m["name"]: m for m in self.info["correction_methods"]}
+        if self.blocks:
+            return [(name, True, described.get(name, {}).get("description", ""))
+                    for name in self.info["block_methods"]]
+        return [(m["name"], m["available"], m["description"])
+                for m in self.info["correction_methods"]]
 
     # -- source and size -------------------------------------------------------------------
     def _set_source(self, source):
@@ -92,8 +118,8 @@ class AnalyzePanel:
         """Automatic: show the size the backend will about choose, and lock it."""
         f = self.form
         f.size.setEnabled(not f.auto.isChecked())
-        if self.volume > 0 and f.auto.isChecked():
-            f.size.setValue(sizing.default_size(self.volume))
+        if self.volume > 0 and f.auto.isChecked() and self.info is not None:
+            f.size.setValue(sizing.default_size(self.volume, self.info))
         self._update_estimate()
 
     def chosen_size(self):
@@ -105,7 +131,7 @@ class AnalyzePanel:
         return self.form.method.currentData() if self.form.method is not None else ""
 
     def _update_estimate(self, *_):
-        self.form.show_estimate(self.volume)
+        self.form.show_estimate(self.volume, self.info)
 
     def _follow_selection(self):
         if self.fixed_source or self.runner.is_running():
@@ -129,7 +155,8 @@ class AnalyzePanel:
                 self._set_source(shapes.source_from_selection(FreeCADGui.Selection.getSelection()))
             solid = shapes.solid_of(self.source)
             self.size_run, self.method_run = self.chosen_size(), self.chosen_method()
-            self.digest = analysis.input_digest(solid, self.size_run, self.method_run, self.blocks)
+            runs.check_method(self.method_run, self.blocks)
+            self.digest = runs.input_digest(solid, self.size_run, self.method_run, self.blocks)
             self.job = AnalysisJob(solid, self.size_run, method=self.method_run or None,
                                    blocks=self.blocks)
         except (FrameFixError, ReferenceError, RuntimeError, OSError) as e:
@@ -152,12 +179,12 @@ class AnalyzePanel:
         self._finish_job()
         try:
             if _alive(self.analysis):
-                analysis.update_analysis(self.analysis, self.size_run, report, self.digest,
-                                         self.method_run)
+                make.update_analysis(self.analysis, self.size_run, report, self.digest,
+                                     self.method_run)
             else:
-                self.analysis = analysis.make_analysis(self.source, self.size_run, report,
-                                                       self.digest, method=self.method_run,
-                                                       blocks=self.blocks)
+                self.analysis = make.make_analysis(self.source, self.size_run, report,
+                                                   self.digest, method=self.method_run,
+                                                   blocks=self.blocks)
         except Exception as e:  # the adapter boundary: whatever went wrong goes to the panel
             self._show_error("could not add the results: %s" % e)
             return

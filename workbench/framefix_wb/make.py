@@ -1,0 +1,175 @@
+"""Making and updating FrameFix results in a document, with or without the GUI.
+
+    curves = make_analysis(part)                  # runs the backend, then adds the objects
+    curves = make_analysis(part, size, report=r)  # objects from a report the panel already has
+    blocks = make_blocks(part, method="snap")
+
+The backend runs before anything is added, so a failed run leaves the document unchanged.
+Each change is one undoable transaction. The make layer: above the proxies (objects/) and
+runs.py, below taskpanels/ and commands/.
+"""
+import json
+
+import FreeCAD
+
+from . import runs, shapes, style
+from .errors import FrameFixError
+from .objects.blocks import Blocks
+from .objects.feature_curves import FeatureCurves
+from .objects.singular_curves import SingularCurves
+from .objects.singular_nodes import SingularNodes
+from .objects.snapped_paths import SnappedPaths
+
+if FreeCAD.GuiUp:
+    from .viewproviders.blocks import ViewProviderBlocks
+    from .viewproviders.feature_curves import ViewProviderFeatureCurves
+    from .viewproviders.singular_curves import ViewProviderSingularCurves
+    from .viewproviders.singular_nodes import ViewProviderSingularNodes
+    from .viewproviders.snapped_paths import ViewProviderSnappedPaths
+    VIEW_PROVIDERS = {SingularCurves: ViewProviderSingularCurves,
+                      SingularNodes: ViewProviderSingularNodes,
+                      FeatureCurves: ViewProviderFeatureCurves,
+                      SnappedPaths: ViewProviderSnappedPaths, Blocks: ViewProviderBlocks}
+else:
+    VIEW_PROVIDERS = {}
+
+GROUP_LABEL = "FrameFix analysis of %s"
+CORRECTION_GROUP_LABEL = "FrameFix correction (%s) of %s"
+BLOCKS_GROUP_LABEL = "FrameFix blocks (%s) of %s"
+
+
+def _add(doc, type_name, name, label, proxy_class):
+    obj = doc.addObject(type_name, name)
+    proxy_class(obj)
+    obj.Label = label
+    if proxy_class in VIEW_PROVIDERS:
+        VIEW_PROVIDERS[proxy_class](obj.ViewObject)
+    return obj
+
+
+def _fade_source(curves, source):
+    vo = getattr(source, "ViewObject", None) if FreeCAD.GuiUp else None
+    if vo is not None and hasattr(vo, "Transparency"):
+        if curves.SourceTransparency < 0:
+            curves.SourceTransparency = vo.Transparency
+        vo.Transparency = max(vo.Transparency, style.SOURCE_TRANSPARENCY)
+
+
+def _recompute(doc, objects):
+    """Recompute `objects` (not the user's other touched features); raise if one failed."""
+    doc.recompute(objects)
+    failed = [o for o in objects if not o.isValid()]
+    if failed:
+        raise FrameFixError("could not build %s: %s" % (
+            failed[0].Label, " ".join(failed[0].getStatusString().split())))
+
+
+class _Transaction:
+    def __init__(self, doc, name):
+        self.doc, self.name = doc, name
+
+    def __enter__(self):
+        self.doc.openTransaction(self.name)
+
+    def __exit__(self, kind, value, tb):
+        if kind is None:
+            self.doc.commitTransaction()
+        else:
+            self.doc.abortTransaction()
+
+
+def _kind(method, blocks):
+    return "FrameFix blocks" if blocks else "FrameFix correction" if method else "FrameFix analysis"
+
+
+def make_analysis(source, size=None, report=None, digest=None, backend=None, method="",
+                  blocks=False):
+    """Add the analysis group of `source` (a part, Body or Link); returns SingularCurves.
+
+    `size` None (stored as Size 0) lets the backend pick it. Without `report` the backend
+    runs first (synchronously). With it, `digest` must be runs.input_digest() of the solid,
+    size, method and blocks that report was computed from. With `method` ("snap", ...), a
+    correction: the curves are those after correcting, Before35 counts the 3-5 curves before.
+    With `blocks` (method "snap", the default, or "none"), the part cut into blocks too: a
+    Blocks object (the tets coloured by block) beside the curves.
+    """
+    solid = shapes.solid_of(source)
+    size = float(size or 0.0)
+    if blocks:
+        method = method or "snap"
+    if report is None:
+        report = runs.run(solid, size or None, method or None, blocks, backend)
+        digest = runs.input_digest(solid, size, method, blocks)
+    elif blocks:
+        runs.remember_block_mesh(digest, report)
+    doc = source.Document
+    with _Transaction(doc, _kind(method, blocks)):
+        group = doc.addObject("App::DocumentObjectGroup", "FrameFixBlocks" if blocks else
+                              "FrameFixCorrection" if method else "FrameFixAnalysis")
+        group.Label = _group_label(source, method, blocks)
+        curves, parts = _add_parts(doc, method, blocks)
+        curves.Source, curves.Size, curves.Blocks, curves.Method = source, size, blocks, method
+        curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
+        group.addObjects(parts)
+        _fade_source(curves, source)
+        _recompute(doc, parts)
+    return curves
+
+
+def _group_label(source, method, blocks):
+    label = shapes.label_of(source)
+    return (BLOCKS_GROUP_LABEL % (method, label) if blocks else
+            CORRECTION_GROUP_LABEL % (method, label) if method else GROUP_LABEL % label)
+
+
+def _add_parts(doc, method, blocks):
+    """The curves object and the objects reading its report; returns (curves, all of them)."""
+    corrected = method and method != "none"
+    curves = _add(doc, "Part::FeaturePython", "SingularCurves",
+                  "Corrected singular curves" if corrected else "Singular curves", SingularCurves)
+    parts = [curves, _add(doc, "Part::FeaturePython", "SingularNodes", "Singular nodes",
+                          SingularNodes),
+             _add(doc, "Part::FeaturePython", "FeatureCurves", "Feature curves", FeatureCurves)]
+    if corrected:
+        parts.append(_add(doc, "Part::FeaturePython", "SnappedPaths", "Snapped paths",
+                          SnappedPaths))
+    if blocks:
+        parts.append(_add(doc, "Fem::FemMeshObjectPython", "Blocks", "Blocks", Blocks))
+    for part in parts[1:]:
+        part.Analysis = curves
+    return curves, parts
+
+
+def update_analysis(curves, size, report, digest, method=""):
+    """Store a new run (from the task panel) on an existing analysis and recompute it."""
+    doc = curves.Document
+    if curves.Blocks:
+        runs.remember_block_mesh(digest, report)
+    with _Transaction(doc, _kind(method, curves.Blocks)):
+        curves.Size, curves.Method = float(size or 0.0), method
+        curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
+        _fade_source(curves, curves.Source)
+        _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])
+    return curves
+
+
+def make_blocks(source, size=None, method="snap", report=None, digest=None, backend=None):
+    """make_analysis with blocks: correct (`method` snap, or none), cut into blocks; returns
+    the Blocks object (its Analysis is the curves object owning the run)."""
+    curves = make_analysis(source, size, report, digest, backend, method, blocks=True)
+    return blocks_of(curves)
+
+
+def _with_proxy(objects, proxy_class):
+    return [o for o in objects if isinstance(getattr(o, "Proxy", None), proxy_class)]
+
+
+def blocks_of(curves):
+    """The Blocks object of a block run's curves object, or None."""
+    found = _with_proxy(curves.InList, Blocks)
+    return found[0] if found else None
+
+
+def analyses_of(source):
+    """The SingularCurves objects analysing `source`."""
+    return _with_proxy(source.InList, SingularCurves)
