@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Runs `framefix analyze` (or `correct`) on every model of a folder (default: the HexMe set in
-shared/data/hexme beside the repository folder) and prints a table of summaries and timings. Not part of ctest.
+"""Runs `framefix analyze` (or `correct`) on every CAD model of a folder (such as the HexMe set)
+and prints a table of summaries and timings. Not part of ctest.
 
-    /usr/bin/python3 scripts/run_hexme.py [--command correct] [--folder DIR] [--size-factor F]
+    /usr/bin/python3 scripts/run_hexme.py --folder DIR [--command correct] [--size-factor F] [--threads N]
 """
 import argparse
 import json
@@ -16,9 +16,10 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("--folder", default=str(ROOT.parent / "shared" / "data" / "hexme"))
+    p.add_argument("--folder", required=True, help="folder of .step/.stp/.brep/.iges/.igs models")
     p.add_argument("--command", default="analyze", choices=["mesh", "analyze", "correct"])
     p.add_argument("--size-factor", default="1")
+    p.add_argument("--threads", default="0", help="backend threads, 0 = all cores")
     p.add_argument("--out", default="/tmp/framefix-hexme")
     p.add_argument("--timeout", type=float, default=1800)
     args = p.parse_args()
@@ -31,7 +32,7 @@ def main():
         t0 = time.time()
         try:
             r = subprocess.run([str(binary), args.command, str(m), "--out", str(out), "--quiet",
-                                "--size-factor", args.size_factor], capture_output=True, text=True, timeout=args.timeout)
+                                "--size-factor", args.size_factor, "--threads", args.threads], capture_output=True, text=True, timeout=args.timeout)
             code, err = r.returncode, r.stderr.strip().splitlines()[-1:] if r.stderr.strip() else []
         except subprocess.TimeoutExpired:
             code, err = "timeout", []

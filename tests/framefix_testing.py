@@ -26,3 +26,23 @@ def analyze(tmp_path):
         assert code == 0, err
         return json.loads((tmp_path / "out" / "report.json").read_text())
     return go
+
+
+STAGE_ORDER = ["load", "mesh", "field", "singularities", "correct", "blocks"]
+
+
+def progress_stages(stderr):
+    """The stages of the progress lines in stderr, in order of first appearance; asserts that
+    (stage, fraction) never goes back: no stage after a later one, no fraction below the last."""
+    seen, last = [], (-1, 0.0)
+    for line in stderr.splitlines():
+        if not line.startswith("progress "):
+            continue
+        _, stage, fraction = line.split()
+        now = (STAGE_ORDER.index(stage), float(fraction))
+        assert now >= last, "progress went back: %s after %s" % (now, last)
+        assert 0.0 <= now[1] <= 1.0, line
+        last = now
+        if stage not in seen:
+            seen.append(stage)
+    return seen

@@ -1,5 +1,9 @@
 """framefix blocks: the block decomposition of the corrected field, through the command line."""
+import json
+
 import pytest
+
+from conftest import SAMPLES, progress_stages, run
 
 
 def block_ids(vtk_path):
@@ -26,9 +30,28 @@ def test_sanity_parts_give_the_expected_valid_blocks(analyze, tmp_path, name, co
     assert sum(k["tets"] for k in b["blocks"]) == r["mesh"]["tets"]
 
 
-def test_blocks_report_keeps_the_correction(analyze):
-    r = analyze("notch.step", command="blocks")
+def test_notch_after_snapping_gives_seven_valid_conforming_blocks(tmp_path):
+    # The snapped 3-5 curve leaves the notch with no singular curve; the sheets of its 18 feature
+    # curves and of the snapped path cut it into 7 hexahedral blocks with 9 neighbour pairs.
+    code, out, err = run("blocks", SAMPLES / "notch.step", "--out", tmp_path)
+    assert code == 0, err
+    r = json.loads((tmp_path / "report.json").read_text())
     assert r["correction"]["before"]["curves_3_5"] == 1
     assert r["correction"]["after"]["curves_3_5"] == 0
-    assert r["blocks"]["count"] >= 1
-    assert "blocks" in r["timings_s"]
+    b = r["blocks"]
+    assert (b["count"], b["valid"]) == (7, 7)
+    assert (b["conforming_pairs"], b["pairs"]) == (9, 9)
+    assert {"correct", "blocks"} <= set(r["timings_s"])
+    assert progress_stages(err) == ["load", "mesh", "field", "singularities", "correct", "blocks"]
+    assert err.splitlines()[-1] == "progress blocks 1.000"
+    assert "7 blocks, all valid, 9/9 pairs conforming" in out
+
+
+def test_blocks_without_correction_has_no_correction_section(tmp_path):
+    code, out, err = run("blocks", SAMPLES / "l_prism.step", "--method", "none", "--out", tmp_path)
+    assert code == 0, err
+    r = json.loads((tmp_path / "report.json").read_text())
+    assert "correction" not in r and "correct" not in r["timings_s"]
+    assert r["blocks"]["count"] == 3
+    assert progress_stages(err) == ["load", "mesh", "field", "singularities", "blocks"]
+    assert not (tmp_path / "snapped_curves.vtk").exists()

@@ -1,10 +1,12 @@
 """framefix correct --method snap: the paper's recommended correction removes the 3-5 curves."""
+import json
+
 import pytest
 
 from conftest import SAMPLES, run
 
 # Fraction of vertices whose frame turns by more than 10 degrees: the correction must stay local.
-# Section 0 of ALGORITHMS.md measured 1-2 % on the notch and 4-11 % on the half-sphere.
+# docs/algorithms.md#locality-measure gives the measured 1-2 % (notch) and 4-11 % (half-sphere).
 LOCALITY_BOUND = {"notch.step": 0.05, "box_arc.step": 0.05, "half_sphere_box.step": 0.15, "two_cylinders.step": 0.15}
 
 
@@ -40,4 +42,36 @@ def test_methods_not_yet_available_are_refused_at_once(method, tmp_path):
 def test_unknown_method_is_refused(tmp_path):
     code, out, err = run("correct", SAMPLES / "notch.step", "--method", "magic", "--out", tmp_path, timeout=30)
     assert code == 2
-    assert "magic" in err
+    assert "framefix: error [correct]: unknown method 'magic'; use snap, fillet, extrude-curves or extrude-nodes" in err
+
+
+def test_info_lists_the_registry_and_the_defaults():
+    code, out, err = run("info")
+    assert code == 0, err
+    info = json.loads(out)
+    assert info["version"] == 1
+    assert info["default_target_tets"] == 50000
+    assert 0 < info["mean_tet_volume_h3"] < 0.118  # below a regular tet's 1/(6 sqrt 2)
+    names = [m["name"] for m in info["correction_methods"]]
+    assert names == ["snap", "fillet", "extrude-curves", "extrude-nodes"]
+    assert all(m["description"] for m in info["correction_methods"])
+    available = [m["name"] for m in info["correction_methods"] if m["available"]]
+    assert info["block_methods"] == available + ["none"]
+
+
+def test_every_method_info_marks_unavailable_is_refused_before_any_work(tmp_path):
+    info = json.loads(run("info")[1])
+    for m in info["correction_methods"]:
+        if m["available"]:
+            continue
+        code, out, err = run("correct", SAMPLES / "notch.step", "--method", m["name"], "--out", tmp_path, timeout=30)
+        assert code == 2
+        assert f"framefix: error [correct]: method '{m['name']}' is not available yet" in err
+        assert "progress" not in err  # refused before the part is loaded
+        assert not (tmp_path / "report.json").exists()
+
+
+def test_correct_refuses_method_none(tmp_path):
+    code, out, err = run("correct", SAMPLES / "notch.step", "--method", "none", "--out", tmp_path, timeout=30)
+    assert code == 2
+    assert "framefix: error [correct]: method 'none'" in err

@@ -3,7 +3,7 @@ import json
 
 import pytest
 
-from conftest import SAMPLES, run
+from conftest import SAMPLES, progress_stages, run
 
 SAMPLE_FILES = sorted(p.name for p in SAMPLES.glob("*.step"))
 
@@ -32,23 +32,39 @@ def test_mesh_writes_report_and_vtk(name, tmp_path):
     assert any(l.startswith("SCALARS edge_tag") for l in vtk)
 
 
-def test_progress_lines_on_stderr(tmp_path):
-    code, out, err = run("mesh", SAMPLES / "cube.step", "--out", tmp_path)
-    assert code == 0
-    stages = [l.split()[1] for l in err.splitlines() if l.startswith("progress ")]
-    assert "mesh" in stages
+# Feature curves per sample: (curves, convex valence 1, flat 2, concave 3). Each count is one per
+# B-rep edge with a dihedral angle away from 180 degrees (seams and imprint-free smooth joins are
+# not features): a box has 12 convex edges, an L-prism 17 convex and its inner concave one.
+FEATURES = {
+    "cube.step": (12, 12, 0, 0), "l_prism.step": (18, 17, 0, 1), "notch.step": (18, 17, 0, 1),
+    "cylinder.step": (2, 2, 0, 0), "groove.step": (24, 22, 0, 2), "half_sphere_box.step": (13, 12, 0, 1),
+    "two_cylinders.step": (5, 3, 0, 2), "box_arc.step": (15, 14, 1, 0), "box_arc_curved.step": (16, 15, 1, 0),
+}
 
 
-def test_cube_has_12_convex_feature_curves(analyze):
-    report = analyze("cube.step", command="mesh")
-    assert report["features"]["curves"] == 12
-    assert report["features"]["by_valence"]["1"] == 12
+def test_every_sample_has_its_feature_counts():
+    assert set(FEATURES) == set(SAMPLE_FILES)
 
 
-def test_l_prism_has_one_concave_feature_curve(analyze):
-    report = analyze("l_prism.step", command="mesh")
-    assert report["features"]["by_valence"]["3"] == 1
-    assert report["features"]["by_valence"]["1"] == 17
+@pytest.mark.parametrize("name", sorted(FEATURES))
+def test_feature_curves_are_counted_per_valence(analyze, name):
+    report = analyze(name, "--size-factor", "1.6", command="mesh")
+    curves, convex, flat, concave = FEATURES[name]
+    f = report["features"]
+    assert f["curves"] == curves
+    assert (f["by_valence"]["1"], f["by_valence"]["2"], f["by_valence"]["3"], f["by_valence"]["4"]) == (convex, flat, concave, 0)
+    assert len({c["edge"] for c in report["feature_curves"]}) == len(report["feature_curves"]) == curves
+
+
+@pytest.mark.parametrize("command,stages", [
+    ("mesh", ["load", "mesh"]),
+    ("analyze", ["load", "mesh", "field", "singularities"]),
+])
+def test_progress_lines_go_forward_in_stage_order(tmp_path, command, stages):
+    code, out, err = run(command, SAMPLES / "cube.step", "--out", tmp_path, "--size-factor", "1.6")
+    assert code == 0, err
+    assert progress_stages(err) == stages
+    assert err.splitlines()[-1] == "progress %s 1.000" % stages[-1]
 
 
 @pytest.mark.parametrize("name,kind", [("notch.igs", "iges"), ("notch.brep", "brep")])

@@ -51,11 +51,14 @@ def test_bad_files_raise_framefix_error(name, words):
 
 
 def test_missing_file_and_bad_brep_string_raise_framefix_error():
-    with pytest.raises(framefix.Error, match="does not exist"):
+    with pytest.raises(framefix.Error, match="^load: /nonexistent/x.step does not exist"):
         framefix.load_shape("/nonexistent/x.step")
-    with pytest.raises(framefix.Error):
+    with pytest.raises(framefix.Error, match="^load: .*BREP"):
         framefix.load_brep_string("this is not a BREP")
 
 
-def test_error_is_an_exception_class():
-    assert issubclass(framefix.Error, Exception)
+def test_errors_name_the_stage_and_what_to_do():
+    with pytest.raises(framefix.Error, match=r"^load: 'part\.xyz' has an unknown extension; give a \.step"):
+        framefix.analyze("part.xyz")
+    with pytest.raises(framefix.Error, match=r"^options: unknown stage 'solve'; use load, mesh"):
+        framefix.run(str(SAMPLES / "cube.step"), stop_after="solve")

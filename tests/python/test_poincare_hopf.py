@@ -1,4 +1,5 @@
-"""Surface singular nodes obey Poincare-Hopf on every boundary patch (ALGORITHMS.md section 9).
+"""Surface singular nodes obey Poincare-Hopf on every boundary patch (docs/algorithms.md#valence-sign-rule
+for the indices).
 
 On a patch P bounded by feature curves: sum of the indices of the curve ends in P (+1/4 for a
 valence-3 curve, -1/4 for a valence-5 curve) = chi(P) - sum over its corners of (2 - k_c)/4, with

@@ -1,0 +1,83 @@
+"""framefix.run: one pipeline, stopped where the caller says; the registry read from Python."""
+import ctypes
+
+import numpy as np
+import pytest
+
+import framefix
+from conftest import SAMPLES
+
+CUBE, NOTCH = str(SAMPLES / "cube.step"), str(SAMPLES / "notch.step")
+COARSE = 1.6  # size factor: a few thousand tets are enough for these facts
+
+
+@pytest.mark.parametrize("stop,present", [
+    ("mesh", {"mesh"}),
+    ("field", {"mesh", "field"}),
+    ("singularities", {"mesh", "field", "singularities"}),
+])
+def test_run_returns_exactly_the_stages_it_reached(stop, present):
+    r = framefix.run(CUBE, stop, size_factor=COARSE)
+    stages = {"mesh", "field", "singularities", "correction", "blocks"}
+    assert {s for s in stages if getattr(r, s) is not None} == present
+    report = framefix.report(r)
+    assert ("field" in report) == ("field" in present)
+    assert ("singularities" in report) == ("singularities" in present)
+    assert "correction" not in report and "blocks" not in report
+
+
+def test_cube_analysis_has_no_singular_curve():
+    r = framefix.analyze(CUBE, size_factor=COARSE)
+    assert r.singularities.summary["curves"] == 0
+    assert r.mesh.num_vertices == r.field.axes.shape[0]
+    assert len(r.features) == 12
+
+
+def test_correct_notch_keeps_what_it_corrected():
+    r = framefix.correct(NOTCH)
+    c = r.correction
+    assert c.method == "snap" and c.changed
+    assert c.before["curves_3_5"] == 1 and c.graph_before.summary["curves_3_5"] == 1
+    assert r.singularities.summary["curves_3_5"] == 0
+    assert len(c.snapped_paths) == 1 and c.snapped_paths[0].shape[1] == 3
+    assert 0 < c.rotated_fraction < 0.05
+    assert r.blocks is None
+
+
+def test_blocks_of_the_l_prism_without_correction():
+    r = framefix.build_blocks(str(SAMPLES / "l_prism.step"), method="none", size=0.05)
+    assert r.correction is None
+    assert (r.blocks.count, r.blocks.valid) == (3, 3)
+    assert r.blocks.tet_block.shape == (r.mesh.num_tets,)
+    assert set(np.unique(r.blocks.tet_block)) == {0, 1, 2}
+
+
+def test_a_shape_runs_like_its_file():
+    shape = framefix.load_shape(CUBE)
+    a = framefix.report(framefix.run(shape, "mesh", size_factor=COARSE))
+    b = framefix.report(framefix.run(CUBE, "mesh", size_factor=COARSE))
+    assert a["mesh"] == b["mesh"] and a["features"] == b["features"]
+
+
+def test_registry_from_python_matches_what_run_accepts():
+    methods = framefix.correction_methods()
+    assert methods[0] == framefix.info()["correction_methods"][0]
+    for m in methods:
+        if m["available"]:
+            continue
+        # refused before the (missing) part is even opened
+        with pytest.raises(framefix.Error, match="^correct: method '%s' is not available yet" % m["name"]):
+            framefix.correct("/nonexistent/part.step", method=m["name"])
+    with pytest.raises(framefix.Error, match="^correct: unknown method 'magic'"):
+        framefix.correct("/nonexistent/part.step", method="magic")
+
+
+def test_thread_count_is_per_call_and_results_do_not_depend_on_it():
+    gomp = ctypes.CDLL("libgomp.so.1")  # the OpenMP runtime _core runs on, already loaded
+    threads_before = gomp.omp_get_max_threads()
+    one = framefix.report(framefix.analyze(NOTCH, size_factor=COARSE, threads=1))
+    two = framefix.report(framefix.analyze(NOTCH, size_factor=COARSE, threads=2))
+    for r in (one, two):
+        del r["timings_s"], r["peak_memory_mb"]
+    assert one == two
+    assert gomp.omp_get_max_threads() == threads_before  # the host process is left as it was
