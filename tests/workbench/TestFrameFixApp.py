@@ -198,3 +198,23 @@ class Blocks(unittest.TestCase):
             self.assertGreater(len(doc.getObject("SnappedPaths").Shape.Edges), 0)
         finally:
             FreeCAD.closeDocument(doc.Name)
+
+
+class BackendInfo(unittest.TestCase):
+    """The workbench's methods and sizing come from the real backend's `framefix info`."""
+
+    def test_the_registry_reaches_the_workbench(self):
+        from framefix_wb import runs
+        info = runs.backend_info()
+        methods = {m["name"]: m["available"] for m in info["correction_methods"]}
+        self.assertEqual(methods, {"snap": True, "fillet": False, "extrude-curves": False,
+                                   "extrude-nodes": False})
+        self.assertEqual(info["block_methods"], ["snap", "none"])
+        self.assertEqual(info["default_target_tets"], 50000)
+
+    def test_an_unavailable_method_is_refused_before_a_run(self):
+        from framefix_wb import runs
+        from framefix_wb.errors import FrameFixError
+        with self.assertRaises(FrameFixError) as e:
+            runs.check_method("fillet")
+        self.assertIn("fillet", str(e.exception))
