@@ -1,8 +1,10 @@
 // Loading STEP / IGES / BREP files and BREP strings into a BrepModel holding exactly one solid.
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <BRepBuilderAPI_MakeSolid.hxx>
@@ -12,6 +14,7 @@
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
+#include <BinTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -29,6 +32,7 @@
 #include <TopoDS_Solid.hxx>
 
 #include "framefix/brep/occt_error.h"
+#include "framefix/core/isolation.h"
 #include "framefix/brep/shape.h"
 
 namespace framefix {
@@ -110,8 +114,6 @@ TopoDS_Shape read_file(const std::string& path, const std::string& kind) {
         return read_with(reader, path, "STEP");
     }
     if (kind == "iges") {
-        // The IGES reader prints its entity count on stdout, which belongs to the CLI's summary.
-        Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
         IGESControl_Reader reader;
         return read_with(reader, path, "IGES");
     }
@@ -122,46 +124,91 @@ TopoDS_Shape read_file(const std::string& path, const std::string& kind) {
     return shape;
 }
 
+// The one solid of `shape`, checked by BRepCheck and oriented outward. Damaged geometry can
+// crash OCCT here as in the readers, so it runs in the same worker process.
+TopoDS_Solid checked_solid(const TopoDS_Shape& shape, const std::string& source, const std::string& kind) {
+    TopoDS_Solid solid = single_solid(shape, source, kind == "iges");
+    BRepCheck_Analyzer check(solid);
+    if (!check.IsValid())
+        throw Error("load", source + " is not a valid solid (BRepCheck_Analyzer failed); repair it, " +
+                                "e.g. with FreeCAD's Part > Check geometry and Refine shape");
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(solid, props);
+    if (props.Mass() < 0) {  // inside out: a closed shell oriented inward
+        BRepLib::OrientClosedSolid(solid);
+        BRepGProp::VolumeProperties(solid, props);
+    }
+    if (!(props.Mass() > 0)) throw Error("load", source + " contains a solid of zero volume");
+    return solid;
+}
+
+// The model of a checked solid: its sub-shape maps, volume and bounding box.
+BrepModel model_of(const TopoDS_Solid& solid, const std::string& path, const std::string& kind) {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(solid, props);
+    auto data = std::make_shared<BrepModel::Shape>();
+    data->solid = solid;
+    TopExp::MapShapes(solid, TopAbs_FACE, data->faces);
+    TopExp::MapShapes(solid, TopAbs_EDGE, data->edges);
+    TopExp::MapShapes(solid, TopAbs_VERTEX, data->vertices);
+
+    BrepModel model;
+    model.path = path;
+    model.kind = kind;
+    model.num_faces = data->faces.Extent();
+    model.num_edges = data->edges.Extent();
+    model.num_vertices = data->vertices.Extent();
+    model.volume = props.Mass();
+    Bnd_Box box;
+    BRepBndLib::Add(solid, box, false);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    model.bbox_min = Eigen::Vector3d(x0, y0, z0);
+    model.bbox_max = Eigen::Vector3d(x1, y1, z1);
+    model.shape = std::move(data);
+    return model;
+}
+
+// The worker's time budget for reading `bytes` of input: OCCT loops for minutes on some damaged
+// files (a count changed to 1e8). Valid parts read at about 0.5 s per MB here (HexMe's largest,
+// 180 kB: 0.09 s), so this leaves 40x headroom. FRAMEFIX_LOAD_TIMEOUT_S overrides it (0: none).
+constexpr double kLoadBaseSeconds = 10, kLoadSecondsPerMB = 20;
+
+double load_timeout_s(double bytes) {
+    if (const char* v = std::getenv("FRAMEFIX_LOAD_TIMEOUT_S")) return std::max(0.0, std::atof(v));
+    return kLoadBaseSeconds + kLoadSecondsPerMB * bytes / 1e6;
+}
+
+// Reads and checks in a worker process (isolation.h): a crash or a hang of OCCT on a damaged file
+// becomes an Error. The solid comes back in OCCT's exact binary BREP format.
+BrepModel load_isolated(const std::string& source, const std::string& path, const std::string& kind, double bytes,
+                        const std::function<TopoDS_Shape()>& read) {
+    const IsolatedTask task{"load", "OpenCASCADE, reading " + source,
+                            "the file is damaged or uses geometry OCCT cannot read; re-export it from the CAD system",
+                            load_timeout_s(bytes)};
+    const std::string bytes_out = run_isolated(task, [&] {
+        // The readers print their diagnostics on stdout, which belongs to the CLI's summary; in the
+        // worker this silences only the worker.
+        if (isolation_enabled()) Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+        return occt_call("load", source, [&] {
+            std::ostringstream out;
+            BinTools::Write(checked_solid(read(), source, kind), out);
+            return out.str();
+        });
+    });
+    return occt_call("load", source, [&] {
+        std::istringstream in(bytes_out);
+        TopoDS_Shape shape;
+        BinTools::Read(shape, in);
+        return model_of(TopoDS::Solid(shape), path, kind);
+    });
+}
+
 }  // namespace
 
 BrepModel make_model(const TopoDS_Shape& shape, const std::string& source, const std::string& path,
                      const std::string& kind) {
-    return occt_call("load", source, [&] {
-        TopoDS_Solid solid = single_solid(shape, source, kind == "iges");
-        BRepCheck_Analyzer check(solid);
-        if (!check.IsValid())
-            throw Error("load", source + " is not a valid solid (BRepCheck_Analyzer failed); repair it, " +
-                                    "e.g. with FreeCAD's Part > Check geometry and Refine shape");
-        GProp_GProps props;
-        BRepGProp::VolumeProperties(solid, props);
-        if (props.Mass() < 0) {  // inside out: a closed shell oriented inward
-            BRepLib::OrientClosedSolid(solid);
-            BRepGProp::VolumeProperties(solid, props);
-        }
-        if (!(props.Mass() > 0)) throw Error("load", source + " contains a solid of zero volume");
-
-        auto data = std::make_shared<BrepModel::Shape>();
-        data->solid = solid;
-        TopExp::MapShapes(solid, TopAbs_FACE, data->faces);
-        TopExp::MapShapes(solid, TopAbs_EDGE, data->edges);
-        TopExp::MapShapes(solid, TopAbs_VERTEX, data->vertices);
-
-        BrepModel model;
-        model.path = path;
-        model.kind = kind;
-        model.num_faces = data->faces.Extent();
-        model.num_edges = data->edges.Extent();
-        model.num_vertices = data->vertices.Extent();
-        model.volume = props.Mass();
-        Bnd_Box box;
-        BRepBndLib::Add(solid, box, false);
-        double x0, y0, z0, x1, y1, z1;
-        box.Get(x0, y0, z0, x1, y1, z1);
-        model.bbox_min = Eigen::Vector3d(x0, y0, z0);
-        model.bbox_max = Eigen::Vector3d(x1, y1, z1);
-        model.shape = std::move(data);
-        return model;
-    });
+    return occt_call("load", source, [&] { return model_of(checked_solid(shape, source, kind), path, kind); });
 }
 
 BrepModel load_shape(const std::string& path) {
@@ -180,14 +227,14 @@ BrepModel load_shape(const std::string& path) {
     else
         throw Error("load", path + " has unknown extension '" + ext +
                                 "'; give a .step/.stp, .brep or .iges/.igs file");
-    const TopoDS_Shape shape = occt_call("load", path, [&] { return read_file(path, kind); });
-    return make_model(shape, path, path, kind);
+    const double bytes = double(std::filesystem::file_size(path, ec));
+    return load_isolated(path, path, kind, bytes, [&] { return read_file(path, kind); });
 }
 
 BrepModel load_brep_string(const std::string& brep_text) {
     if (brep_text.find_first_not_of(" \t\r\n") == std::string::npos)
         throw Error("load", "BREP string is empty; pass shape.exportBrepToString() of a solid");
-    const TopoDS_Shape shape = occt_call("load", "BREP string", [&] {
+    return load_isolated("BREP string", "", "brep", double(brep_text.size()), [&] {
         std::istringstream in(brep_text);
         TopoDS_Shape s;
         BRep_Builder builder;
@@ -196,7 +243,6 @@ BrepModel load_brep_string(const std::string& brep_text) {
             throw Error("load", "BREP string is not readable BREP (truncated?); pass shape.exportBrepToString()");
         return s;
     });
-    return make_model(shape, "BREP string", "", "brep");
 }
 
 std::string to_brep_string(const BrepModel& model) {

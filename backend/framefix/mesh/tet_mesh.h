@@ -12,6 +12,8 @@
 //
 // Boundary triangles are oriented outward and tagged with their B-rep face; mesh edges lying on
 // feature curves are tagged with their B-rep edge; B-rep vertices are mesh vertices.
+#include <string>
+
 #include <Eigen/Core>
 
 #include "framefix/mesh/types.h"
@@ -35,6 +37,10 @@ struct TetMesh {
 };
 
 double tet_volume(const TetMesh& mesh, int tet);  // signed, model units^3
+
+// The mesh as bytes and back (exact), for a mesh made in a worker process.
+std::string tet_mesh_bytes(const TetMesh& mesh);
+TetMesh tet_mesh_from_bytes(const std::string& bytes);
 
 struct MeshQuality {
     double min_volume = 0;         // smallest signed tet volume

@@ -10,6 +10,7 @@
 #include <tetgen.h>
 
 #include "framefix/core/error.h"
+#include "framefix/core/isolation.h"
 #include "framefix/tetgen/tet_output.h"
 #include "framefix/tetgen/tetrahedralize.h"
 
@@ -88,16 +89,7 @@ void check_self_intersections(tetgenio& in) {
         throw Error("mesh", tetgen_failure(3) + " (" + std::to_string(report.numberoftrifaces) + " triangles involved)");
 }
 
-}  // namespace
-
-TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
-    if (surface.triangles.rows() < 4) throw Error("mesh", "the surface has " + std::to_string(surface.triangles.rows()) +
-                                                              " triangles; a closed surface needs at least 4");
-    const double volume = enclosed_volume(surface);
-    if (!(volume > 0)) throw Error("mesh", "the surface encloses no positive volume; it must be closed and outward");
-    const double h = options.size > 0 ? options.size : size_for_tets(volume, options.target_tets);
-    check_memory(volume, h, options);
-
+TetMesh run_tetgen(const SurfaceMesh& surface, double h) {
     tetgenio in, out;
     fill_input(surface, in);
     check_self_intersections(in);
@@ -111,7 +103,22 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
         throw Error("mesh", tetgen_failure(1));
     }
     if (out.numberoftetrahedra == 0) throw Error("mesh", "TetGen produced no tets; the surface may not be closed");
-    TetMesh mesh = tet_mesh_from_tetgen(out, surface);
+    return tet_mesh_from_tetgen(out, surface);
+}
+
+}  // namespace
+
+TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
+    if (surface.triangles.rows() < 4) throw Error("mesh", "the surface has " + std::to_string(surface.triangles.rows()) +
+                                                              " triangles; a closed surface needs at least 4");
+    const double volume = enclosed_volume(surface);
+    if (!(volume > 0)) throw Error("mesh", "the surface encloses no positive volume; it must be closed and outward");
+    const double h = options.size > 0 ? options.size : size_for_tets(volume, options.target_tets);
+    check_memory(volume, h, options);
+
+    // TetGen can crash in boundary recovery instead of throwing: it runs in a worker process.
+    const IsolatedTask task{"mesh", "TetGen", "try a slightly different --size, or check the solid for tiny faces"};
+    TetMesh mesh = tet_mesh_from_bytes(run_isolated(task, [&] { return tet_mesh_bytes(run_tetgen(surface, h)); }));
     mesh.size = h;
     return mesh;
 }
