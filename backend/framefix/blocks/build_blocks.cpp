@@ -77,7 +77,7 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
 
     // Sheets.
     std::vector<SheetSource> sources = singular_sources(mesh, field, graph, locator, h, options);
-    std::vector<SheetSource> feature = feature_sources(mesh, topo, features, field, paths);
+    std::vector<SheetSource> feature = feature_sources(mesh, features, field, paths);
     sources.insert(sources.end(), feature.begin(), feature.end());
     const Points singular = singular_points(graph);
     out.sheets = build_sheets(mesh, field, locator, sources, singular, h, options, out.stats);

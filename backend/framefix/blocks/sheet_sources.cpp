@@ -103,7 +103,7 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
     return out;
 }
 
-std::vector<SheetSource> feature_sources(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features,
                                          const FrameField& field, const std::vector<SnappedPath>& paths) {
     const int nv = mesh.num_vertices();
     // Outward area normals per (vertex, B-rep face) and per vertex; boundary triangles per mesh edge.

@@ -76,7 +76,7 @@ int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab
 }
 
 // One pass: (vertex, block) whose link in the block's boundary triangles has >= 2 components.
-int fix_vertices(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab) {
+int fix_vertices(const TetTopology& topo, Eigen::VectorXi& lab) {
     struct Link { PairKey vert_block; int a, c; bool operator<(const Link& o) const { return vert_block < o.vert_block; } };
     const std::uint64_t nb = lab.maxCoeff() + 1;
     std::vector<Link> links;
@@ -117,7 +117,7 @@ Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Ei
     for (int round = 0; round < 4; ++round) {
         int moved = 0;
         for (int pass = 0, m = 1; pass < 10 && m > 0; ++pass) moved += m = fix_edges(mesh, topo, lab), compact_labels(lab);
-        for (int pass = 0, m = 1; pass < 6 && m > 0; ++pass) moved += m = fix_vertices(mesh, topo, lab), compact_labels(lab);
+        for (int pass = 0, m = 1; pass < 6 && m > 0; ++pass) moved += m = fix_vertices(topo, lab), compact_labels(lab);
         if (moved == 0) break;
     }
     compact_labels(lab);

@@ -53,7 +53,7 @@ struct CurveAtVertex {
 
 }  // namespace
 
-Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features) {
+Constraints boundary_constraints(const TetMesh& mesh, const FeatureSet& features) {
     const int nv = mesh.num_vertices();
     if (mesh.feature_edges.rows() != mesh.edge_tags.size())
         throw Error("constraints", "the mesh has " + std::to_string(mesh.feature_edges.rows()) + " feature edges but " +
@@ -149,7 +149,6 @@ Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& topo, c
             cons.kind[v] = ConstraintKind::Free;  // 2 or >= 4 faces: the field decides (singular point)
         }
     }
-    (void)topo;
     return cons;
 }
 
