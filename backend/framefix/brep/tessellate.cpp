@@ -24,7 +24,7 @@
 #include "framefix/brep/occt_error.h"
 #include "framefix/brep/shape.h"
 #include "framefix/brep/surface_refinement.h"
-#include "framefix/tetgen/tetrahedralize.h"
+#include "framefix/mesh/size_model.h"
 
 namespace framefix {
 namespace {
