@@ -8,7 +8,7 @@
 #include <map>
 #include <memory>
 
-#include "backend/corrections/cube_fixture.h"
+#include "backend/corrections/cube_frames.h"
 #include "framefix/blocks/blocks.h"
 #include "framefix/core/disjoint_set.h"
 #include "framefix/core/error.h"
