@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
         const double t_load = seconds(t0);
         auto t1 = Clock::now();
         const TetTopology topo = build_topology(cf.mesh);
-        const Constraints cons = boundary_constraints(cf.mesh, topo, cf.features);
+        const Constraints cons = boundary_constraints(cf.mesh, cf.features);
         const double t_prep = seconds(t1);
         FieldOptions o;
         o.threads = argc > 2 ? std::atoi(argv[2]) : 0;

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
         FieldOptions fo;
         fo.threads = argc > 2 ? std::atoi(argv[2]) : 0;
         const int repeats = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
-        const FrameField field = solve_frame_field(cf.mesh, topo, boundary_constraints(cf.mesh, topo, cf.features), fo);
+        const FrameField field = solve_frame_field(cf.mesh, topo, boundary_constraints(cf.mesh, cf.features), fo);
         const double solve = field.seconds_init + field.seconds_smooth;
 
         SingularityOptions so;

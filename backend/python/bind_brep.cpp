@@ -4,6 +4,7 @@
 #include "bindings.h"
 #include "framefix/brep/brep_model.h"
 #include "framefix/core/error.h"
+#include "framefix/mesh/size_model.h"
 
 namespace py = pybind11;
 
@@ -53,7 +54,7 @@ void bind_brep(py::module_& m) {
     m.def("to_brep_string", &to_brep_string, py::arg("shape"));
     m.def("classify_features", [](const BrepModel& s) { return classify_features(s).edges; }, py::arg("shape"),
           py::call_guard<py::gil_scoped_release>(), "One EdgeFeature per B-rep edge");
-    m.def("default_size", &default_size, py::arg("shape"), py::arg("target_tets") = 50000,
+    m.def("default_size", &default_size, py::arg("shape"), py::arg("target_tets") = kDefaultTargetTets,
           "Edge length giving about target_tets tets");
 }
 

@@ -52,7 +52,7 @@ void bind_field(py::module_& m) {
         "solve_frame_field",
         [](const TetMesh& mesh, const std::vector<EdgeFeature>& features, int max_iterations, int threads) {
             const TetTopology topo = build_topology(mesh);
-            const Constraints c = boundary_constraints(mesh, topo, feature_set(features));
+            const Constraints c = boundary_constraints(mesh, feature_set(features));
             FieldOptions o;
             o.max_iterations = max_iterations;
             o.threads = threads;

@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <chrono>
-#include <numeric>
 #include <set>
 #include <unordered_map>
 
@@ -10,7 +9,9 @@
 #include "framefix/blocks/partition.h"
 #include "framefix/blocks/sheets.h"
 #include "framefix/blocks/validation.h"
+#include "framefix/core/disjoint_set.h"
 #include "framefix/core/error.h"
+#include "framefix/mesh/keys.h"
 
 namespace framefix {
 
@@ -35,42 +36,31 @@ void check_inputs(const TetMesh& mesh, const TetTopology& topo, const FrameField
 // CAD surface group of each topology face (-1 inside): B-rep faces joined across boundary edges
 // that are not feature curves (e.g. a cylinder's seam), so one block face is not split there.
 std::vector<int> surface_groups(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features) {
-    const long long nv = mesh.num_vertices();
-    auto ekey = [nv](int a, int b) { return std::min(a, b) * nv + std::max(a, b); };
-    std::unordered_map<long long, int> feature_edge;
+    const std::uint64_t nv = mesh.num_vertices();
+    auto ekey = [nv](int a, int b) { return edge_key(a, b, nv); };
+    std::unordered_map<PairKey, int> feature_edge;
     for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
         if (features.valence_of(mesh.edge_tags[e]) > 0) feature_edge[ekey(mesh.feature_edges(e, 0), mesh.feature_edges(e, 1))] = 1;
     const int max_tag = mesh.face_tags.size() ? mesh.face_tags.maxCoeff() : 0;
-    std::vector<int> parent(max_tag + 1);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
-    std::unordered_map<long long, int> edge_tag;
+    DisjointSet groups(max_tag + 1);  // merge_into: the group ids are roots, they label block faces
+    std::unordered_map<PairKey, int> edge_tag;
     for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b)
         for (int k = 0; k < 3; ++k) {
-            const long long key = ekey(mesh.boundary_faces(b, k), mesh.boundary_faces(b, (k + 1) % 3));
+            const PairKey key = ekey(mesh.boundary_faces(b, k), mesh.boundary_faces(b, (k + 1) % 3));
             auto [it, fresh] = edge_tag.try_emplace(key, mesh.face_tags[b]);
             if (!fresh && it->second != mesh.face_tags[b] && !feature_edge.count(key))
-                parent[find(it->second)] = find(mesh.face_tags[b]);
+                groups.merge_into(it->second, mesh.face_tags[b]);
         }
-    std::unordered_map<long long, int> tag_of;  // sorted triangle -> B-rep face
-    auto tkey = [nv](Eigen::Vector3i f) {
-        std::sort(f.data(), f.data() + 3);
-        return (f[0] * nv + f[1]) * nv + f[2];
-    };
-    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) tag_of[tkey(mesh.boundary_faces.row(b).transpose())] = mesh.face_tags[b];
+    std::unordered_map<TriangleKey, int, TriangleKeyHash> tag_of;  // sorted triangle -> B-rep face
+    auto tkey = [](const auto& f) { return triangle_key(f(0), f(1), f(2)); };
+    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) tag_of[tkey(mesh.boundary_faces.row(b))] = mesh.face_tags[b];
     std::vector<int> group(topo.faces.rows(), -1);
     for (int f = 0; f < int(topo.faces.rows()); ++f) {
         if (topo.face_tets(f, 1) >= 0) continue;
-        auto it = tag_of.find(tkey(topo.faces.row(f).transpose()));
-        group[f] = it == tag_of.end() ? 0 : find(it->second);
+        auto it = tag_of.find(tkey(topo.faces.row(f)));
+        group[f] = it == tag_of.end() ? 0 : groups.find(it->second);
     }
     return group;
-}
-
-double mean_edge(const TetMesh& mesh, const TetTopology& topo) {
-    double s = 0;
-    for (int e = 0; e < int(topo.edges.rows()); ++e) s += (mesh.points.row(topo.edges(e, 0)) - mesh.points.row(topo.edges(e, 1))).norm();
-    return topo.edges.rows() ? s / double(topo.edges.rows()) : 1;
 }
 
 }  // namespace
@@ -81,13 +71,13 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     check_inputs(mesh, topo, field, graph);
     const auto t0 = Clock::now();
     BlockDecomposition out;
-    const double h = mean_edge(mesh, topo);
+    const double h = mean_edge_length(mesh, topo, 1);
     out.h = h;
     const TetLocator locator(mesh, topo);
 
     // Sheets.
     std::vector<SheetSource> sources = singular_sources(mesh, field, graph, locator, h, options);
-    std::vector<SheetSource> feature = feature_sources(mesh, topo, features, field, paths);
+    std::vector<SheetSource> feature = feature_sources(mesh, features, field, paths);
     sources.insert(sources.end(), feature.begin(), feature.end());
     const Points singular = singular_points(graph);
     out.sheets = build_sheets(mesh, field, locator, sources, singular, h, options, out.stats);

@@ -3,20 +3,11 @@
 #include <unordered_map>
 
 #include "framefix/blocks/partition.h"
+#include "framefix/core/disjoint_set.h"
 
 namespace framefix {
 
 namespace {
-
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    int find(int a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    void join(int a, int b) { parent[find(a)] = find(b); }
-};
 
 // Neighbouring tet across each local face, -1 on the boundary.
 int across(const TetTopology& topo, int tet, int lf) {
@@ -29,9 +20,9 @@ int across(const TetTopology& topo, int tet, int lf) {
 std::vector<int> vertex_labels(const TetMesh& mesh, const TetTopology& topo, const std::vector<char>& cut,
                                int min_size) {
     const int nv = mesh.num_vertices(), ne = int(topo.edges.rows());
-    UnionFind uf(nv);
+    DisjointSet uf(nv);  // merge_into: vertex labels are roots and break vote ties
     for (int e = 0; e < ne; ++e)
-        if (!cut[e]) uf.join(topo.edges(e, 0), topo.edges(e, 1));
+        if (!cut[e]) uf.merge_into(topo.edges(e, 0), topo.edges(e, 1));
     std::vector<int> label(nv), size(nv, 0);
     for (int v = 0; v < nv; ++v) label[v] = uf.find(v), size[label[v]] += 1;
     std::vector<std::vector<int>> adj(nv);
@@ -85,10 +76,10 @@ Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, con
         }
     }
     // Face-connected pieces of each label.
-    UnionFind uf(nt);
+    DisjointSet uf(nt);
     for (int f = 0; f < int(topo.face_tets.rows()); ++f) {
         const int a = topo.face_tets(f, 0), b = topo.face_tets(f, 1);
-        if (a >= 0 && b >= 0 && lab[a] == lab[b]) uf.join(a, b);
+        if (a >= 0 && b >= 0 && lab[a] == lab[b]) uf.merge_into(a, b);
     }
     for (int t = 0; t < nt; ++t) lab[t] = uf.find(t);
     compact_labels(lab);

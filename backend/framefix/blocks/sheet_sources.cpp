@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "framefix/frame_field/projection.h"
+#include "framefix/mesh/keys.h"
 
 namespace framefix {
 
@@ -102,14 +103,14 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
     return out;
 }
 
-std::vector<SheetSource> feature_sources(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features,
                                          const FrameField& field, const std::vector<SnappedPath>& paths) {
     const int nv = mesh.num_vertices();
     // Outward area normals per (vertex, B-rep face) and per vertex; boundary triangles per mesh edge.
-    std::unordered_map<long long, Eigen::Vector3d> tag_normal;
+    std::unordered_map<PairKey, Eigen::Vector3d> tag_normal;  // pair_key(vertex, tag, kAnyIdStride)
     std::vector<Eigen::Vector3d> vert_normal(nv, Eigen::Vector3d::Zero());
-    std::unordered_map<long long, std::vector<int>> edge_tags;
-    auto ekey = [nv](int a, int b) { return (long long)std::min(a, b) * nv + std::max(a, b); };
+    std::unordered_map<PairKey, std::vector<int>> edge_tags;
+    auto ekey = [nv](int a, int b) { return edge_key(a, b, nv); };
     for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) {
         const Eigen::Vector3i f = mesh.boundary_faces.row(b).transpose();
         const Eigen::Vector3d n = (mesh.points.row(f[1]) - mesh.points.row(f[0]))
@@ -117,7 +118,7 @@ std::vector<SheetSource> feature_sources(const TetMesh& mesh, const TetTopology&
                                       .transpose();
         const int tag = mesh.face_tags[b];
         for (int k = 0; k < 3; ++k) {
-            auto [it, fresh] = tag_normal.try_emplace((long long)f[k] * 100000 + tag, n);
+            auto [it, fresh] = tag_normal.try_emplace(pair_key(f[k], tag, kAnyIdStride), n);
             if (!fresh) it->second += n;
             vert_normal[f[k]] += n;
             edge_tags[ekey(f[k], f[(k + 1) % 3])].push_back(tag);
@@ -167,7 +168,7 @@ std::vector<SheetSource> feature_sources(const TetMesh& mesh, const TetTopology&
             seed.tangent = unit_or_zero((mesh.points.row(chain[std::min(i + 1, m - 1)]) -
                                          mesh.points.row(chain[std::max(i - 1, 0)])).transpose());
             for (int s = 0; s < 2; ++s) {
-                auto it = tag_normal.find((long long)v * 100000 + by_count[s].second);
+                auto it = tag_normal.find(pair_key(v, by_count[s].second, kAnyIdStride));
                 if (it == tag_normal.end() || it->second.norm() == 0) continue;
                 const Eigen::Vector3d inward = -it->second.normalized();
                 int best = 0;

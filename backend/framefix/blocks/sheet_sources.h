@@ -32,7 +32,7 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
 // Concave feature curves (valence 3): one seed per curve vertex, directions = the frame axes
 // closest to -n1, -n2 (the inward continuations of the two faces). Snapped paths: one seed per
 // path vertex, directions = the two axes with a.n < -0.3 (the 45 deg path frame's inward axes).
-std::vector<SheetSource> feature_sources(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features,
                                          const FrameField& field, const std::vector<SnappedPath>& paths);
 
 }  // namespace framefix

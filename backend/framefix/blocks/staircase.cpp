@@ -5,6 +5,8 @@
 #include <unordered_map>
 
 #include "framefix/blocks/partition.h"
+#include "framefix/core/disjoint_set.h"
+#include "framefix/mesh/keys.h"
 
 namespace framefix {
 
@@ -49,12 +51,11 @@ template <class F> void for_each_block_face(const TetTopology& topo, const Eigen
 // One pass: (edge, block) pairs with >= 4 boundary faces of that block (two fans of the block
 // touching along the edge). Sorting keys is several times faster than hashing them.
 int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab) {
-    const long long nv = mesh.num_vertices();
-    std::vector<std::pair<long long, int>> entries;  // (edge key, block)
+    const std::uint64_t nv = mesh.num_vertices();
+    std::vector<std::pair<PairKey, int>> entries;  // (edge key, block), sorted: (edge, block) order
     for_each_block_face(topo, lab, [&](int f, int b) {
         for (int k = 0; k < 3; ++k) {
-            const long long a = topo.faces(f, k), c = topo.faces(f, (k + 1) % 3);
-            entries.push_back({std::min(a, c) * nv + std::max(a, c), b});
+            entries.push_back({edge_key(topo.faces(f, k), topo.faces(f, (k + 1) % 3), nv), b});
         }
     });
     std::sort(entries.begin(), entries.end());
@@ -63,7 +64,7 @@ int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab
         size_t j = i;
         while (j < entries.size() && entries[j] == entries[i]) ++j;
         if (j - i >= 4) {
-            const int a = int(entries[i].first / nv), c = int(entries[i].first % nv);
+            const auto [a, c] = key_ids(entries[i].first, nv);
             std::vector<int> ring;
             for (int t : star(topo, a))
                 for (int k = 0; k < 4; ++k) if (mesh.tets(t, k) == c) { ring.push_back(t); break; }
@@ -75,17 +76,18 @@ int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab
 }
 
 // One pass: (vertex, block) whose link in the block's boundary triangles has >= 2 components.
-int fix_vertices(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab) {
-    struct Link { long long vert_block; int a, c; bool operator<(const Link& o) const { return vert_block < o.vert_block; } };
-    const long long nb = lab.maxCoeff() + 1;
+int fix_vertices(const TetTopology& topo, Eigen::VectorXi& lab) {
+    struct Link { PairKey vert_block; int a, c; bool operator<(const Link& o) const { return vert_block < o.vert_block; } };
+    const std::uint64_t nb = lab.maxCoeff() + 1;
     std::vector<Link> links;
     for_each_block_face(topo, lab, [&](int f, int b) {
         for (int k = 0; k < 3; ++k)
-            links.push_back({topo.faces(f, k) * nb + b, topo.faces(f, (k + 1) % 3), topo.faces(f, (k + 2) % 3)});
+            links.push_back({pair_key(topo.faces(f, k), b, nb), topo.faces(f, (k + 1) % 3), topo.faces(f, (k + 2) % 3)});
     });
     std::sort(links.begin(), links.end());
-    std::vector<long long> bad;
-    std::vector<int> verts, parent;
+    std::vector<PairKey> bad;
+    std::vector<int> verts;
+    DisjointSet link;
     for (size_t i = 0; i < links.size();) {
         size_t j = i;
         while (j < links.size() && links[j].vert_block == links[i].vert_block) ++j;
@@ -93,20 +95,18 @@ int fix_vertices(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& 
         for (size_t k = i; k < j; ++k) verts.push_back(links[k].a), verts.push_back(links[k].c);
         std::sort(verts.begin(), verts.end());
         verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-        parent.resize(verts.size());
-        for (size_t k = 0; k < verts.size(); ++k) parent[k] = int(k);
-        auto find = [&](int x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
+        link.reset(int(verts.size()));
         auto local = [&](int v) { return int(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin()); };
         int components = int(verts.size());
-        for (size_t k = i; k < j; ++k) {
-            const int x = find(local(links[k].a)), y = find(local(links[k].c));
-            if (x != y) parent[x] = y, --components;
-        }
+        for (size_t k = i; k < j; ++k) components -= link.merge_into(local(links[k].a), local(links[k].c));
         if (components >= 2) bad.push_back(links[i].vert_block);
         i = j;
     }
     int moved = 0;
-    for (long long k : bad) moved += move_minority(star(topo, int(k / nb)), int(k % nb), lab);
+    for (PairKey k : bad) {
+        const auto [vert, block] = key_ids(k, nb);
+        moved += move_minority(star(topo, vert), block, lab);
+    }
     return moved;
 }
 
@@ -117,7 +117,7 @@ Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Ei
     for (int round = 0; round < 4; ++round) {
         int moved = 0;
         for (int pass = 0, m = 1; pass < 10 && m > 0; ++pass) moved += m = fix_edges(mesh, topo, lab), compact_labels(lab);
-        for (int pass = 0, m = 1; pass < 6 && m > 0; ++pass) moved += m = fix_vertices(mesh, topo, lab), compact_labels(lab);
+        for (int pass = 0, m = 1; pass < 6 && m > 0; ++pass) moved += m = fix_vertices(topo, lab), compact_labels(lab);
         if (moved == 0) break;
     }
     compact_labels(lab);

@@ -7,6 +7,9 @@
 #include <set>
 #include <unordered_map>
 
+#include "framefix/core/disjoint_set.h"
+#include "framefix/mesh/keys.h"
+
 namespace framefix {
 
 namespace {
@@ -20,18 +23,19 @@ struct Adjacency {                 // triangle pairs sharing a mesh edge (non-ma
 
 Adjacency adjacency(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S) {
     Adjacency adj;
-    const long long nv = mesh.num_vertices();
-    std::unordered_map<long long, std::vector<int>> by_edge;
+    const std::uint64_t nv = mesh.num_vertices();
+    // Iterated below: the pair order (hence sums over pairs) follows these key values.
+    std::unordered_map<PairKey, std::vector<int>> by_edge;
     std::set<int> verts;
     for (int i = 0; i < int(S.size()); ++i)
         for (int k = 0; k < 3; ++k) {
             const int a = S[i].verts[k], c = S[i].verts[(k + 1) % 3];
-            by_edge[std::min(a, c) * nv + std::max(a, c)].push_back(i);
+            by_edge[edge_key(a, c, nv)].push_back(i);
             verts.insert(a);
         }
     for (auto& [key, tris] : by_edge) {
         adj.manifold &= tris.size() == 2;
-        const int v0 = int(key / nv), v1 = int(key % nv);
+        const auto [v0, v1] = key_ids(key, nv);
         const double len = (mesh.points.row(v0) - mesh.points.row(v1)).norm();
         for (size_t x = 0; x < tris.size(); ++x)
             for (size_t y = x + 1; y < tris.size(); ++y) adj.pairs.push_back({tris[x], tris[y], len, v0, v1});
@@ -47,13 +51,11 @@ int renumber(std::vector<int>& patch) {
 }
 
 std::vector<int> components(int n, const Adjacency& adj, const std::vector<int>& label) {
-    std::vector<int> parent(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
+    DisjointSet sets(n);
     for (const auto& p : adj.pairs)
-        if (label[p.a] == label[p.b]) parent[find(p.a)] = find(p.b);
+        if (label[p.a] == label[p.b]) sets.merge_into(p.a, p.b);
     std::vector<int> out(n);
-    for (int i = 0; i < n; ++i) out[i] = find(i);
+    for (int i = 0; i < n; ++i) out[i] = sets.find(i);
     renumber(out);
     return out;
 }
@@ -251,14 +253,18 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
     };
     info.flat_edges = 0;
     for (const auto& [key, segs] : chains) {
-        std::map<int, int> parent;
-        auto find = [&](int a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
-        for (auto [a, c] : segs) parent.try_emplace(a, a), parent.try_emplace(c, c);
-        for (auto [a, c] : segs) parent[find(a)] = find(c);
-        std::set<int> roots;
+        // Chains counted as connected components of the segments' vertices (ascending ids).
+        std::vector<int> verts;
+        for (auto [a, c] : segs) verts.push_back(a), verts.push_back(c);
+        std::sort(verts.begin(), verts.end());
+        verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+        auto local = [&](int v) { return int(std::lower_bound(verts.begin(), verts.end(), v) - verts.begin()); };
+        DisjointSet sets(int(verts.size()));
+        int chains_here = int(verts.size());
+        for (auto [a, c] : segs) chains_here -= sets.unite(local(a), local(c));
         std::vector<Eigen::Vector3d> chain_pts;
-        for (auto& [v, _] : parent) roots.insert(find(v)), chain_pts.push_back(mesh.points.row(v).transpose());
-        info.edges += int(roots.size());
+        for (int v : verts) chain_pts.push_back(mesh.points.row(v).transpose());
+        info.edges += chains_here;
         // Flat-edge proxy: outward mean normals of the two patches within 2 h of their chain.
         if (angle_deg(mean_normal_near(key.first, chain_pts), mean_normal_near(key.second, chain_pts)) < o.flat_deg)
             info.flat_edges += 1;

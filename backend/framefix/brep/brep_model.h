@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "framefix/mesh/features.h"
+#include "framefix/mesh/size_model.h"
 #include "framefix/mesh/surface_mesh.h"
 #include "framefix/mesh/types.h"
 
@@ -42,7 +43,7 @@ double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d&
 double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d& p);
 
 // Size h for about `target_tets` near-uniform tets in this solid.
-double default_size(const BrepModel& model, int target_tets = 50000);
+double default_size(const BrepModel& model, int target_tets = kDefaultTargetTets);
 
 // OCCT surface triangulation with boundary edges near h, faces and feature segments tagged.
 SurfaceMesh tessellate(const BrepModel& model, const FeatureSet& features, const MeshOptions& options);

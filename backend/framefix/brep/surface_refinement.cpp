@@ -11,7 +11,7 @@
 namespace framefix {
 namespace {
 
-using Key = std::uint64_t;
+using Key = PairKey;  // edge_key(a, b, kAnyIdStride)
 
 constexpr double kFlipNormalCos = 0.9;  // flipped triangles within ~25 deg of the surface normal
 
@@ -29,7 +29,7 @@ struct Refiner {
         const auto& v = s.triangles[size_t(tri)].v;
         for (int k = 0; k < 3; ++k) {
             const int a = v[size_t(k)], b = v[size_t((k + 1) % 3)];
-            const Key key = TaggedSurface::edge_key(a, b);
+            const Key key = edge_key(a, b, kAnyIdStride);
             std::vector<int>& tris = edge_tris[key];
             if (tris.empty()) queue.push({length(a, b), key});
             tris.push_back(tri);
@@ -39,7 +39,7 @@ struct Refiner {
     void unlink(int tri) {
         const auto& v = s.triangles[size_t(tri)].v;
         for (int k = 0; k < 3; ++k) {
-            const Key key = TaggedSurface::edge_key(v[size_t(k)], v[size_t((k + 1) % 3)]);
+            const Key key = edge_key(v[size_t(k)], v[size_t((k + 1) % 3)], kAnyIdStride);
             auto it = edge_tris.find(key);
             if (it == edge_tris.end()) continue;
             auto& tris = it->second;
@@ -84,14 +84,14 @@ struct Refiner {
         const int t1 = it->second[0], t2 = it->second[1];
         TaggedSurface::Triangle A = s.triangles[size_t(t1)], B = s.triangles[size_t(t2)];
         if (A.face != B.face) return;
-        const int a0 = int(key >> 32), b0 = int(key & 0xffffffffu);
+        const auto [a0, b0] = key_ids(key, kAnyIdStride);
         const size_t ka = find_edge(A, a0, b0), kb = find_edge(B, a0, b0);
         FF_ASSERT(ka < 3 && kb < 3);
         // A = (a, b, c) with the edge a -> b; B = (b, a, d).
         const int a = A.v[ka], b = A.v[(ka + 1) % 3], c = A.v[(ka + 2) % 3];
         const int d = B.v[(kb + 2) % 3];
         if (c == d || angle(c, a, b) + angle(d, b, a) <= 3.14159265358979 + 1e-9) return;
-        if (edge_tris.count(TaggedSurface::edge_key(c, d))) return;
+        if (edge_tris.count(edge_key(c, d, kAnyIdStride))) return;
         const Eigen::Vector3d n_old = normal(a, b, c).normalized() + normal(b, a, d).normalized();
         const Eigen::Vector3d n1 = normal(a, d, c), n2 = normal(d, b, c);
         if (n1.dot(n_old) <= 0.5 * n1.norm() * n_old.norm() || n2.dot(n_old) <= 0.5 * n2.norm() * n_old.norm()) return;
@@ -112,8 +112,8 @@ struct Refiner {
         link(t1);
         link(t2);
         --flips_left;
-        for (Key k : {TaggedSurface::edge_key(a, d), TaggedSurface::edge_key(d, b), TaggedSurface::edge_key(b, c),
-                      TaggedSurface::edge_key(c, a)})
+        for (Key k : {edge_key(a, d, kAnyIdStride), edge_key(d, b, kAnyIdStride), edge_key(b, c, kAnyIdStride),
+                      edge_key(c, a, kAnyIdStride)})
             to_check.push_back(k);
     }
 
@@ -126,7 +126,7 @@ struct Refiner {
     }
 
     void split(int a, int b) {
-        const Key key = TaggedSurface::edge_key(a, b);
+        const Key key = edge_key(a, b, kAnyIdStride);
         const std::vector<int> tris = edge_tris.at(key);
         const auto curve = s.curve_edges.find(key);
         const bool on_curve = curve != s.curve_edges.end();
@@ -170,15 +170,15 @@ struct Refiner {
             link(tri);
             link(int(s.triangles.size()) - 1);
             const int apex = t.v[(i1 + 1) % 3];  // the corner opposite the split edge
-            to_check.push_back(TaggedSurface::edge_key(t.v[i0], apex));
-            to_check.push_back(TaggedSurface::edge_key(t.v[i1], apex));
+            to_check.push_back(edge_key(t.v[i0], apex, kAnyIdStride));
+            to_check.push_back(edge_key(t.v[i1], apex, kAnyIdStride));
         }
         if (on_curve) {
             s.curve_edges.erase(key);
             const double ta = a < b ? ce.t_lo : ce.t_hi, tb = a < b ? ce.t_hi : ce.t_lo;
             // m is the highest index so far: it is the "hi" end of both halves.
-            s.curve_edges[TaggedSurface::edge_key(a, m)] = {ce.edge, ta, t_mid};
-            s.curve_edges[TaggedSurface::edge_key(b, m)] = {ce.edge, tb, t_mid};
+            s.curve_edges[edge_key(a, m, kAnyIdStride)] = {ce.edge, ta, t_mid};
+            s.curve_edges[edge_key(b, m, kAnyIdStride)] = {ce.edge, tb, t_mid};
         }
     }
 };
@@ -197,7 +197,8 @@ void refine_surface(TaggedSurface& surface, const SurfaceEvaluator& eval, double
         r.queue.pop();
         if (len <= max_edge) break;
         if (r.edge_tris.find(key) == r.edge_tris.end()) continue;  // split already
-        r.split(int(key >> 32), int(key & 0xffffffffu));
+        const auto [a, b] = key_ids(key, kAnyIdStride);
+        r.split(a, b);
         r.legalize_all();
     }
 }

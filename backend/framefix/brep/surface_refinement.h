@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "framefix/mesh/keys.h"
+
 namespace framefix {
 
 struct TaggedSurface {
@@ -26,12 +28,8 @@ struct TaggedSurface {
     };
     std::vector<Eigen::Vector3d> points;  // model units; B-rep vertices first
     std::vector<Triangle> triangles;
-    std::unordered_map<std::uint64_t, CurveEdge> curve_edges;  // key edge_key(a, b): mesh edges on B-rep edges
-
-    static std::uint64_t edge_key(int a, int b) {
-        const std::uint64_t lo = std::uint64_t(a < b ? a : b), hi = std::uint64_t(a < b ? b : a);
-        return lo << 32 | hi;
-    }
+    // Mesh edges on B-rep edges, keyed edge_key(a, b, kAnyIdStride) (points are added while keyed).
+    std::unordered_map<PairKey, CurveEdge> curve_edges;
 };
 
 struct SurfaceEvaluator {

@@ -24,7 +24,7 @@
 #include "framefix/brep/occt_error.h"
 #include "framefix/brep/shape.h"
 #include "framefix/brep/surface_refinement.h"
-#include "framefix/tetgen/tetrahedralize.h"
+#include "framefix/mesh/size_model.h"
 
 namespace framefix {
 namespace {
@@ -82,7 +82,7 @@ void discretise_edge(Builder& b, const BrepModel::Shape& shape, const TopoDS_Edg
     for (int j = 0; j + 1 < m; ++j) {
         const int a = ids[size_t(j)], c = ids[size_t(j + 1)];
         const double ta = params[size_t(j)], tc = params[size_t(j + 1)];
-        if (a != c) b.surface.curve_edges[TaggedSurface::edge_key(a, c)] = {e, a < c ? ta : tc, a < c ? tc : ta};
+        if (a != c) b.surface.curve_edges[edge_key(a, c, kAnyIdStride)] = {e, a < c ? ta : tc, a < c ? tc : ta};
     }
 }
 
@@ -221,8 +221,10 @@ SurfaceMesh to_surface_mesh(const TaggedSurface& ts, const FeatureSet& features,
         s.face_tags(Eigen::Index(t)) = ts.triangles[t].face;
     }
     std::vector<std::array<int, 3>> segments;  // (a, b, edge), sorted for determinism
-    for (const auto& [key, ce] : ts.curve_edges)
-        if (features.valence_of(ce.edge) > 0) segments.push_back({int(key >> 32), int(key & 0xffffffffu), ce.edge});
+    for (const auto& [key, ce] : ts.curve_edges) {
+        const auto [a, b] = key_ids(key, kAnyIdStride);
+        if (features.valence_of(ce.edge) > 0) segments.push_back({a, b, ce.edge});
+    }
     std::sort(segments.begin(), segments.end());
     s.feature_segments.resize(Eigen::Index(segments.size()), 2);
     s.segment_tags.resize(Eigen::Index(segments.size()));

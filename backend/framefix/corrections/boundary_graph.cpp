@@ -125,10 +125,7 @@ BoundaryGraph build_boundary_graph(const TetMesh& mesh, const TetTopology& topo,
     build_adjacency(mesh, g);
     compute_normals(mesh, g);
 
-    double total = 0;
-    for (int e = 0; e < topo.edges.rows(); ++e)
-        total += (mesh.points.row(topo.edges(e, 0)) - mesh.points.row(topo.edges(e, 1))).norm();
-    g.h_mean = topo.edges.rows() > 0 ? total / double(topo.edges.rows()) : g.hb;
+    g.h_mean = mean_edge_length(mesh, topo, g.hb);
     return g;
 }
 

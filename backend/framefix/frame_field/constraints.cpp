@@ -10,13 +10,12 @@
 
 #include "framefix/core/error.h"
 #include "framefix/frame_field/frame_field.h"
+#include "framefix/mesh/keys.h"
 
 namespace framefix {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-
-long long edge_key(int a, int b) { return (long long)std::min(a, b) << 32 | (unsigned)std::max(a, b); }
 
 // Outward normal of each CAD face around each boundary vertex (area-weighted), and the
 // area-weighted normal over all faces.
@@ -54,7 +53,7 @@ struct CurveAtVertex {
 
 }  // namespace
 
-Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features) {
+Constraints boundary_constraints(const TetMesh& mesh, const FeatureSet& features) {
     const int nv = mesh.num_vertices();
     if (mesh.feature_edges.rows() != mesh.edge_tags.size())
         throw Error("constraints", "the mesh has " + std::to_string(mesh.feature_edges.rows()) + " feature edges but " +
@@ -65,13 +64,13 @@ Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& topo, c
     const VertexNormals vn = vertex_normals(mesh);
 
     // CAD faces on either side of each feature curve, ranked by how many of its edges they touch.
-    std::unordered_map<long long, int> feature_edge_of;
+    std::unordered_map<PairKey, int> feature_edge_of;
     for (int e = 0; e < mesh.feature_edges.rows(); ++e)
-        if (features.valence_of(mesh.edge_tags(e)) > 0) feature_edge_of[edge_key(mesh.feature_edges(e, 0), mesh.feature_edges(e, 1))] = e;
+        if (features.valence_of(mesh.edge_tags(e)) > 0) feature_edge_of[edge_key(mesh.feature_edges(e, 0), mesh.feature_edges(e, 1), nv)] = e;
     std::map<int, std::map<int, int>> curve_face_count;  // curve -> face tag -> edges
     for (int f = 0; f < mesh.boundary_faces.rows(); ++f)
         for (int k = 0; k < 3; ++k) {
-            auto it = feature_edge_of.find(edge_key(mesh.boundary_faces(f, k), mesh.boundary_faces(f, (k + 1) % 3)));
+            auto it = feature_edge_of.find(edge_key(mesh.boundary_faces(f, k), mesh.boundary_faces(f, (k + 1) % 3), nv));
             if (it != feature_edge_of.end()) curve_face_count[mesh.edge_tags(it->second)][mesh.face_tags(f)] += 1;
         }
     std::map<int, std::array<int, 2>> curve_faces;  // only curves with two distinct faces are features
@@ -150,7 +149,6 @@ Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& topo, c
             cons.kind[v] = ConstraintKind::Free;  // 2 or >= 4 faces: the field decides (singular point)
         }
     }
-    (void)topo;
     return cons;
 }
 

@@ -77,10 +77,7 @@ P1System assemble_p1(const TetMesh& mesh, const TetTopology& topo, int threads) 
         throw Error("field", "tet " + std::to_string(bad_tet) +
                                  " is flat or inverted (volume <= 0); re-mesh or orient the tets positively");
 
-    double sum = 0;
-    for (int e = 0; e < topo.edges.rows(); ++e)
-        sum += (mesh.points.row(topo.edges(e, 0)) - mesh.points.row(topo.edges(e, 1))).norm();
-    s.mean_edge = topo.edges.rows() ? sum / double(topo.edges.rows()) : 0.0;
+    s.mean_edge = mean_edge_length(mesh, topo);
     s.diameter = nv ? (mesh.points.colwise().maxCoeff() - mesh.points.colwise().minCoeff()).norm() : 0.0;
     return s;
 }

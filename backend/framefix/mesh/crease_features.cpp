@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include "framefix/core/disjoint_set.h"
 #include "framefix/core/error.h"
 
 namespace framefix {
@@ -22,11 +23,6 @@ struct BoundaryEdge {
     bool crease = false;
     double theta = 180;  // dihedral angle inside the solid, degrees
 };
-
-int find_root(std::vector<int>& parent, int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-}
 
 }  // namespace
 
@@ -70,18 +66,14 @@ CreaseFeatures detect_crease_features(TetMesh mesh, const CreaseOptions& o) {
     }
 
     // Faces: union of triangles across non-crease edges, numbered by their smallest triangle.
-    std::vector<int> parent(nb);
-    std::iota(parent.begin(), parent.end(), 0);
+    DisjointSet sets(nb);
     for (const BoundaryEdge& e : edges)
-        if (!e.crease) {
-            const int r0 = find_root(parent, e.f0), r1 = find_root(parent, e.f1);
-            parent[std::max(r0, r1)] = std::min(r0, r1);
-        }
+        if (!e.crease) sets.unite(e.f0, e.f1);
     std::vector<int> face_id(nb, 0);
     int faces = 0;
     mesh.face_tags.resize(nb);
     for (int f = 0; f < nb; ++f) {
-        const int r = find_root(parent, f);
+        const int r = sets.find(f);
         if (face_id[r] == 0) face_id[r] = ++faces;
         mesh.face_tags(f) = face_id[r];
     }

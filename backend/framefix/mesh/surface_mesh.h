@@ -2,6 +2,7 @@
 // The boundary of a solid as a triangulated PLC: what OCCT's tessellation hands to TetGen.
 #include <Eigen/Core>
 
+#include "framefix/mesh/size_model.h"
 #include "framefix/mesh/types.h"
 
 namespace framefix {
@@ -18,7 +19,7 @@ struct SurfaceMesh {
 // Options of the meshing stage (tessellate + tetrahedralize).
 struct MeshOptions {
     double size = 0;            // target edge length h in model units; 0 = about target_tets tets
-    int target_tets = 50000;    // used only when size == 0
+    int target_tets = kDefaultTargetTets;  // used only when size == 0
     double max_memory_mb = 0;   // refuse sizes whose estimate exceeds this; 0 = 80% of available RAM
 };
 

@@ -76,4 +76,12 @@ TetTopology build_topology(const TetMesh& mesh) {
     return topo;
 }
 
+double mean_edge_length(const TetMesh& mesh, const TetTopology& topo, double if_no_edges) {
+    const int ne = int(topo.edges.rows());
+    if (ne == 0) return if_no_edges;
+    double sum = 0;  // in edge order: callers rely on bit-identical results
+    for (int e = 0; e < ne; ++e) sum += (mesh.points.row(topo.edges(e, 0)) - mesh.points.row(topo.edges(e, 1))).norm();
+    return sum / double(ne);
+}
+
 }  // namespace framefix

@@ -18,4 +18,7 @@ struct TetTopology {
 
 TetTopology build_topology(const TetMesh& mesh);
 
+// Mean length of the unique edges, model units (the mesh size h); `if_no_edges` when there are none.
+double mean_edge_length(const TetMesh& mesh, const TetTopology& topo, double if_no_edges = 0.0);
+
 }  // namespace framefix

@@ -41,14 +41,6 @@ bool touches_boundary(const ChainContext& c, int t) {
 
 }  // namespace
 
-double mean_edge_length(const TetMesh& mesh, const TetTopology& topo) {
-    const int ne = int(topo.edges.rows());
-    if (ne == 0) return 0;
-    double sum = 0;
-    for (int e = 0; e < ne; ++e) sum += (mesh.points.row(topo.edges(e, 0)) - mesh.points.row(topo.edges(e, 1))).norm();
-    return sum / ne;
-}
-
 EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<RawChain>& chains) {
     EndStats stats;
     std::vector<std::pair<int, Eigen::Vector3d>> junction;  // (cluster, tet centroid) of node tets
@@ -80,7 +72,7 @@ EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<R
     }
 
     // Dead ends close together share a node, so that a curve with a gap can be joined again.
-    UnionFind dead_sets(int(dead.size()));
+    DisjointSet dead_sets(int(dead.size()));
     for (size_t i = 0; i < dead.size(); ++i)
         for (size_t j = i + 1; j < dead.size(); ++j)
             if ((tet_centroid(c.mesh, dead[i]->tet) - tet_centroid(c.mesh, dead[j]->tet)).norm() < attach_radius)
@@ -97,7 +89,7 @@ EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<R
         if (!ch.closed)
             for (RawEnd& e : ch.ends)
                 if (e.type == EndType::Boundary) bnd.push_back(&e);
-    UnionFind bnd_sets(int(bnd.size()));
+    DisjointSet bnd_sets(int(bnd.size()));
     std::map<int, int> first_end;  // boundary vertex -> first end touching it
     for (size_t i = 0; i < bnd.size(); ++i)
         for (int v : end_boundary_verts(c, *bnd[i])) {

@@ -7,7 +7,7 @@
 #include <Eigen/Core>
 
 #include "framefix/singularities/chains.h"
-#include "framefix/singularities/union_find.h"
+#include "framefix/core/disjoint_set.h"
 
 namespace framefix::detail {
 
@@ -37,7 +37,6 @@ struct RawChain {
 
 Eigen::Vector3d face_centroid(const TetMesh& mesh, const TetTopology& topo, int f);
 Eigen::Vector3d tet_centroid(const TetMesh& mesh, int t);
-double mean_edge_length(const TetMesh& mesh, const TetTopology& topo);
 
 ChainContext classify_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& val);
 // Leave face f through `side`: true with the next face and the side it is entered from, or false

@@ -31,7 +31,7 @@ ChainContext classify_tets(const TetMesh& mesh, const TetTopology& topo, const s
         }
     for (int t = 0; t < nt; ++t) node[t] |= c.ns[t] >= 3;
     // Junction clusters: node tets sharing a vertex.
-    UnionFind uf(nt);
+    DisjointSet uf(nt);
     const int nv = mesh.num_vertices();
     for (int v = 0; v < nv; ++v) {
         int first = -1;
@@ -133,7 +133,7 @@ ChainGraph trace_chains(const TetMesh& mesh, const TetTopology& topo, const std:
     const detail::ChainContext c = detail::classify_tets(mesh, topo, face_valence);
     std::vector<detail::RawChain> chains = detail::walk_chains(c);
     ChainGraph graph;
-    graph.h_mean = detail::mean_edge_length(mesh, topo);
+    graph.h_mean = mean_edge_length(mesh, topo);
     const detail::EndStats stats = detail::resolve_ends(c, options.attach_distance * graph.h_mean, chains);
     graph.dead_ends = stats.dead_ends;
     graph.dead_ends_attached = stats.attached;

@@ -22,10 +22,7 @@ TetLocator::TetLocator(const TetMesh& mesh, const TetTopology& topo) : mesh_(mes
         for (int k = 0; k < 3; ++k) d.col(k) = mesh.points.row(mesh.tets(t, k + 1)).transpose() - p0;
         inverse_[t] = d.inverse();
     }
-    double total = 0;
-    for (int e = 0; e < int(topo.edges.rows()); ++e)
-        total += (mesh.points.row(topo.edges(e, 0)) - mesh.points.row(topo.edges(e, 1))).norm();
-    mean_edge_ = topo.edges.rows() ? total / double(topo.edges.rows()) : 1;
+    mean_edge_ = mean_edge_length(mesh, topo, 1);
 
     lo_ = mesh.points.colwise().minCoeff().transpose();
     hi_ = mesh.points.colwise().maxCoeff().transpose();

@@ -8,22 +8,10 @@
 #include <Eigen/Geometry>
 
 #include "framefix/core/error.h"
+#include "framefix/mesh/keys.h"
 
 namespace framefix {
 namespace {
-
-struct TriangleKey {
-    std::size_t operator()(const std::array<int, 3>& k) const {
-        return std::hash<long long>()((long long)k[0] * 73856093LL ^ (long long)k[1] * 19349663LL ^
-                                      (long long)k[2] * 83492791LL);
-    }
-};
-
-std::array<int, 3> sorted(int a, int b, int c) {
-    std::array<int, 3> k = {a, b, c};
-    std::sort(k.begin(), k.end());
-    return k;
-}
 
 double signed_volume(const Points& p, int a, int b, int c, int d) {
     const Eigen::Vector3d p0 = p.row(a);
@@ -48,18 +36,18 @@ void copy_boundary(const tetgenio& out, TetMesh& mesh) {
     const int n = out.numberoftrifaces;
     mesh.boundary_faces.resize(n, 3);
     mesh.face_tags.resize(n);
-    std::unordered_map<std::array<int, 3>, int, TriangleKey> index;
+    std::unordered_map<TriangleKey, int, TriangleKeyHash> index;
     index.reserve(size_t(n) * 2);
     for (int f = 0; f < n; ++f) {
         for (int k = 0; k < 3; ++k) mesh.boundary_faces(f, k) = out.trifacelist[3 * f + k];
         mesh.face_tags(f) = out.trifacemarkerlist ? out.trifacemarkerlist[f] : 0;
-        index.emplace(sorted(mesh.boundary_faces(f, 0), mesh.boundary_faces(f, 1), mesh.boundary_faces(f, 2)), f);
+        index.emplace(triangle_key(mesh.boundary_faces(f, 0), mesh.boundary_faces(f, 1), mesh.boundary_faces(f, 2)), f);
     }
     std::vector<char> oriented(size_t(n), 0);
     for (int t = 0; t < mesh.num_tets(); ++t)
         for (int lf = 0; lf < 4; ++lf) {
             const int a = mesh.tets(t, kTetFace[lf][0]), b = mesh.tets(t, kTetFace[lf][1]), c = mesh.tets(t, kTetFace[lf][2]);
-            const auto it = index.find(sorted(a, b, c));
+            const auto it = index.find(triangle_key(a, b, c));
             if (it == index.end()) continue;
             mesh.boundary_faces.row(it->second) << a, b, c;  // kTetFace is outward from the tet
             oriented[size_t(it->second)] = 1;

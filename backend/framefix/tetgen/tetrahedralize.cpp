@@ -1,5 +1,6 @@
-// TetGen on the tagged surface PLC: -p (PLC) -q1.3/15 (radius-edge ratio / min dihedral)
-// -a (volume bound from h) without -Y, so TetGen also splits the boundary to size h.
+// TetGen on the tagged surface PLC: -p (PLC) -Y (keep the boundary triangulation: the surface is
+// already refined to edge length ~h, see brep/surface_refinement.h) -q1.3/15 (radius-edge ratio /
+// min dihedral) -a (volume bound from h) -z (0-based) -e (edges, for the feature tags) -Q (quiet).
 #include <cmath>
 #include <cstdio>
 #include <string>

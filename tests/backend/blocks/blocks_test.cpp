@@ -7,10 +7,10 @@
 
 #include <map>
 #include <memory>
-#include <numeric>
 
-#include "backend/corrections/cube_fixture.h"
+#include "backend/corrections/cube_frames.h"
 #include "framefix/blocks/blocks.h"
+#include "framefix/core/disjoint_set.h"
 #include "framefix/core/error.h"
 #include "framefix/pipeline/pipeline.h"
 
@@ -58,16 +58,14 @@ void expect_partition(const TetMesh& mesh, const TetTopology& topo, const BlockD
     for (int t = 0; t < mesh.num_tets(); ++t) total += tet_volume(mesh, t);
     EXPECT_NEAR(volume, total, 1e-9 * total);
     // Face-connectivity: union-find over faces inside one block gives one component per block.
-    std::vector<int> parent(mesh.num_tets());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int a) { while (parent[a] != a) a = parent[a] = parent[parent[a]]; return a; };
+    DisjointSet sets(mesh.num_tets());
     for (int f = 0; f < int(topo.face_tets.rows()); ++f) {
         const int a = topo.face_tets(f, 0), b = topo.face_tets(f, 1);
-        if (b >= 0 && d.tet_block[a] == d.tet_block[b]) parent[find(a)] = find(b);
+        if (b >= 0 && d.tet_block[a] == d.tet_block[b]) sets.unite(a, b);
     }
     for (int b = 0; b < d.count; ++b) {
-        const int root = find(d.blocks[b].tets.front());
-        for (int t : d.blocks[b].tets) ASSERT_EQ(find(t), root) << "block " << b << " is not face-connected";
+        const int root = sets.find(d.blocks[b].tets.front());
+        for (int t : d.blocks[b].tets) ASSERT_EQ(sets.find(t), root) << "block " << b << " is not face-connected";
     }
 }
 

@@ -141,7 +141,7 @@ TEST(Tessellate, RefusesSizesBeyondMemoryBeforeMeshing) {
 
 TEST(Tessellate, DefaultSizeGivesAboutTheTarget) {
     const BrepModel model = load_shape(test::sample("notch"));
-    EXPECT_NEAR(estimate_tets(model.volume, default_size(model, 50000)), 50000, 1);
+    EXPECT_NEAR(estimate_tets(model.volume, default_size(model)), kDefaultTargetTets, 1);
 }
 
 }  // namespace

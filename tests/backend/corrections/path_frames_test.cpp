@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "framefix/corrections/path_frames.h"
-#include "backend/corrections/cube_fixture.h"
+#include "backend/corrections/cube_frames.h"
 
 namespace framefix {
 namespace {

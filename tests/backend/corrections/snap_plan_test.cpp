@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "framefix/corrections/snap_plan.h"
-#include "backend/corrections/cube_fixture.h"
+#include "backend/corrections/cube_frames.h"
 
 namespace framefix {
 namespace {

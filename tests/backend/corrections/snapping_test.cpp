@@ -10,7 +10,7 @@
 #include "framefix/corrections/snapping.h"
 #include "framefix/corrections/split_curves.h"
 #include "framefix/frame_field/projection.h"
-#include "backend/corrections/cube_fixture.h"
+#include "backend/corrections/cube_frames.h"
 
 namespace framefix {
 namespace {

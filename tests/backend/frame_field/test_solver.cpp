@@ -20,7 +20,7 @@ struct Solved {
 Solved solve(testing::Fixture fx, FieldOptions o = {}) {
     Solved s{std::move(fx), {}, {}, {}};
     s.topo = build_topology(s.fx.mesh);
-    s.cons = boundary_constraints(s.fx.mesh, s.topo, s.fx.features);
+    s.cons = boundary_constraints(s.fx.mesh, s.fx.features);
     s.field = solve_frame_field(s.fx.mesh, s.topo, s.cons, o);
     return s;
 }
@@ -34,7 +34,7 @@ double max_frame_error(const FrameField& f, const SH9& expected) {
 
 TEST(Constraints, CubeKinds) {
     const testing::Fixture fx = testing::cube_tets(4);
-    const Constraints c = boundary_constraints(fx.mesh, build_topology(fx.mesh), fx.features);
+    const Constraints c = boundary_constraints(fx.mesh, fx.features);
     int fixed = 0, aligned = 0, free = 0;
     for (ConstraintKind k : c.kind) {
         fixed += k == ConstraintKind::Fixed;
@@ -180,10 +180,10 @@ TEST(Solver, RenumberingDoesNotChangeTheField) {
 TEST(Solver, BadInputIsAFieldError) {
     const testing::Fixture fx = testing::cube_tets(2);
     const TetTopology topo = build_topology(fx.mesh);
-    Constraints c = boundary_constraints(fx.mesh, topo, fx.features);
+    Constraints c = boundary_constraints(fx.mesh, fx.features);
     c.kind.pop_back();
     EXPECT_THROW(solve_frame_field(fx.mesh, topo, c), Error);
-    Constraints none = boundary_constraints(fx.mesh, topo, fx.features);
+    Constraints none = boundary_constraints(fx.mesh, fx.features);
     std::fill(none.kind.begin(), none.kind.end(), ConstraintKind::Free);
     EXPECT_THROW(solve_frame_field(fx.mesh, topo, none), Error);
 }

@@ -3,11 +3,12 @@
 // 6 tets each (Kuhn subdivision along the main diagonal, so neighbouring cells conform), tets
 // positively oriented, boundary triangles outward and tagged by cube face (1: x=0, 2: x=1,
 // 3: y=0, 4: y=1, 5: z=0, 6: z=1), the 12 cube edges as feature edges tagged 1..12 with a
-// FeatureSet of valence 1, the 8 cube corners as corner_vertices. Shared by test_mesh and
-// test_frame_field (header only: the two test executables link different libraries).
+// FeatureSet of valence 1, the 8 cube corners as corner_vertices. The one cube of the backend
+// tests (header only and mesh-level: the test executables link different libraries);
+// corrections/cube_frames.h adds topology, constraints and a field on it.
 #include <algorithm>
 #include <array>
-#include <map>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -68,52 +69,41 @@ inline void tag_axis_faces(TetMesh& mesh) {
     }
 }
 
+inline bool on_01(double x) { return std::abs(x) < 1e-9 || std::abs(x - 1) < 1e-9; }
+
+// Vertex of grid point (i, j, k) of the n^3 cube (grid_tets keeps every point of the full cube).
+inline int cube_vertex(int n, int i, int j, int k) { return (k * (n + 1) + j) * (n + 1) + i; }
+
+// Grid edges along the 12 cube edges, lower vertex first, tagged 1 + 4 axis + 2 c1 + c2 where
+// axis is the edge direction and c1, c2 its two other (0/1) coordinates.
+inline void tag_cube_edges(int n, TetMesh& mesh) {
+    std::vector<std::array<int, 3>> edges;  // a, b, tag
+    for (int v = 0; v < mesh.num_vertices(); ++v)
+        for (int axis = 0; axis < 3; ++axis) {
+            const Eigen::Vector3d p = mesh.points.row(v).transpose();
+            const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+            if (!on_01(p[a1]) || !on_01(p[a2]) || p[axis] > 1 - 1e-9) continue;
+            int idx[3] = {int(std::lround(p[0] * n)), int(std::lround(p[1] * n)), int(std::lround(p[2] * n))};
+            ++idx[axis];
+            edges.push_back({v, cube_vertex(n, idx[0], idx[1], idx[2]), 1 + 4 * axis + 2 * int(p[a1] > 0.5) + int(p[a2] > 0.5)});
+        }
+    mesh.feature_edges.resize(int(edges.size()), 2);
+    mesh.edge_tags.resize(int(edges.size()));
+    for (int e = 0; e < int(edges.size()); ++e) {
+        mesh.feature_edges.row(e) << edges[e][0], edges[e][1];
+        mesh.edge_tags(e) = edges[e][2];
+    }
+}
+
 inline Fixture cube_tets(int n) {
     Fixture fx;
     fx.mesh = grid_tets(n, [](int, int, int) { return true; });
     tag_axis_faces(fx.mesh);
-    // Cube edges: boundary edges whose two endpoints share two extreme coordinates.
-    std::map<std::array<int, 2>, int> edges;
-    auto extreme = [](double x) { return x < 1e-12 ? 0 : x > 1 - 1e-12 ? 1 : -1; };
-    for (int f = 0; f < fx.mesh.boundary_faces.rows(); ++f)
-        for (int k = 0; k < 3; ++k) {
-            int u = fx.mesh.boundary_faces(f, k), v = fx.mesh.boundary_faces(f, (k + 1) % 3);
-            if (u > v) std::swap(u, v);
-            int fixed_axes = 0, key = 0;
-            for (int a = 0; a < 3; ++a) {
-                const int eu = extreme(fx.mesh.points(u, a)), ev = extreme(fx.mesh.points(v, a));
-                if (eu >= 0 && eu == ev) {
-                    fixed_axes += 1;
-                    key = key * 4 + a * 2 + eu;
-                }
-            }
-            if (fixed_axes == 2) edges[{u, v}] = key;
-        }
-    std::map<int, int> tag_of_key;
-    for (const auto& [e, key] : edges) tag_of_key.emplace(key, 0);
-    int next = 0;
-    for (auto& [key, tag] : tag_of_key) tag = ++next;
-    fx.mesh.feature_edges.resize(int(edges.size()), 2);
-    fx.mesh.edge_tags.resize(int(edges.size()));
-    int row = 0;
-    for (const auto& [e, key] : edges) {
-        fx.mesh.feature_edges.row(row) << e[0], e[1];
-        fx.mesh.edge_tags(row++) = tag_of_key[key];
-    }
-    std::vector<int> corners;
-    for (int v = 0; v < fx.mesh.num_vertices(); ++v) {
-        int ext = 0;
-        for (int a = 0; a < 3; ++a) ext += extreme(fx.mesh.points(v, a)) >= 0;
-        if (ext == 3) corners.push_back(v);
-    }
-    fx.mesh.corner_vertices = Eigen::Map<Eigen::VectorXi>(corners.data(), int(corners.size()));
-    for (int e = 1; e <= 12; ++e) {
-        EdgeFeature f;
-        f.edge = e;
-        f.valence = 1;
-        f.angle_min_deg = f.angle_max_deg = 90;
-        fx.features.edges.push_back(f);
-    }
+    tag_cube_edges(n, fx.mesh);
+    fx.mesh.corner_vertices.resize(8);
+    for (int s = 0; s < 8; ++s) fx.mesh.corner_vertices(s) = cube_vertex(n, (s & 1) * n, ((s >> 1) & 1) * n, ((s >> 2) & 1) * n);
+    fx.mesh.size = 1.0 / n;
+    for (int e = 1; e <= 12; ++e) fx.features.edges.push_back({e, 1, 90, 90, 1.0, false, ""});
     return fx;
 }
 

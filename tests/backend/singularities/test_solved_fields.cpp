@@ -11,7 +11,7 @@ namespace {
 
 SingularityGraph solve_and_extract(const TetMesh& mesh, const FeatureSet& features) {
     const TetTopology topo = build_topology(mesh);
-    const FrameField field = solve_frame_field(mesh, topo, boundary_constraints(mesh, topo, features));
+    const FrameField field = solve_frame_field(mesh, topo, boundary_constraints(mesh, features));
     return extract_singularities(mesh, topo, field);
 }
 

@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-#include "backend/corrections/cube_fixture.h"
+#include "backend/corrections/cube_frames.h"
 #include "framefix/core/error.h"
 #include "framefix/frame_field/sh.h"
 #include "framefix/streamlines/streamlines.h"

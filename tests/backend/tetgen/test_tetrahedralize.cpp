@@ -134,10 +134,5 @@ TEST(Tetrahedralize, SelfIntersectingSurfaceIsReported) {
     }
 }
 
-TEST(SizeModel, EstimateAndInverseAgree) {
-    EXPECT_NEAR(estimate_tets(2.0, size_for_tets(2.0, 12345)), 12345, 1e-6);
-    EXPECT_GT(estimate_memory_mb(1e6), estimate_memory_mb(1e5));
-}
-
 }  // namespace
 }  // namespace framefix

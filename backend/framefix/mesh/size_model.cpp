@@ -1,5 +1,5 @@
-// How many tets a size gives, and what they cost: calibrated on TetGen runs on the samples
-// (bench/bench_mesh prints the measured figures next to these estimates).
+#include "framefix/mesh/size_model.h"
+
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
@@ -7,13 +7,11 @@
 
 #include "framefix/core/error.h"
 #include "framefix/core/memory.h"
-#include "framefix/tetgen/tetrahedralize.h"
+#include "framefix/mesh/surface_mesh.h"
 
 namespace framefix {
 namespace {
 
-// Mean tet volume / h^3 of TetGen meshes made with -q1.3/15 -a<kVolumeFactor h^3>.
-constexpr double kMeanTetVolume = 0.085;
 // Peak resident memory per tet while TetGen runs and the result is copied, MiB.
 constexpr double kMbPerTet = 4.0e-4;  // measured ~2.5e-4 (bench_mesh: 1.75M tets, 416 MB peak)
 constexpr double kBaseMb = 50.0;
@@ -37,11 +35,11 @@ double round_up_2(double x) {
 
 }  // namespace
 
-double estimate_tets(double volume, double size) { return volume / (kMeanTetVolume * size * size * size); }
+double estimate_tets(double volume, double size) { return volume / (kMeanTetVolumePerH3 * size * size * size); }
 
 double estimate_memory_mb(double tets) { return kBaseMb + kMbPerTet * tets; }
 
-double size_for_tets(double volume, double tets) { return std::cbrt(volume / (kMeanTetVolume * tets)); }
+double size_for_tets(double volume, double tets) { return std::cbrt(volume / (kMeanTetVolumePerH3 * tets)); }
 
 void check_memory(double volume, double size, const MeshOptions& options) {
     if (!(size > 0)) throw Error("mesh", "size " + format("%g", size) + " is not positive; give an edge length > 0");
