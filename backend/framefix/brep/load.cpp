@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -126,7 +127,8 @@ TopoDS_Shape read_file(const std::string& path, const std::string& kind) {
 
 // The one solid of `shape`, checked by BRepCheck and oriented outward. Damaged geometry can
 // crash OCCT here as in the readers, so it runs in the same worker process.
-TopoDS_Solid checked_solid(const TopoDS_Shape& shape, const std::string& source, const std::string& kind) {
+TopoDS_Solid checked_solid(const TopoDS_Shape& shape, const std::string& source, const std::string& kind,
+                           double& volume) {
     TopoDS_Solid solid = single_solid(shape, source, kind == "iges");
     BRepCheck_Analyzer check(solid);
     if (!check.IsValid())
@@ -139,32 +141,47 @@ TopoDS_Solid checked_solid(const TopoDS_Shape& shape, const std::string& source,
         BRepGProp::VolumeProperties(solid, props);
     }
     if (!(props.Mass() > 0)) throw Error("load", source + " contains a solid of zero volume");
+    volume = props.Mass();
     return solid;
 }
 
-// The model of a checked solid: its sub-shape maps, volume and bounding box.
-BrepModel model_of(const TopoDS_Solid& solid, const std::string& path, const std::string& kind) {
-    GProp_GProps props;
-    BRepGProp::VolumeProperties(solid, props);
+// The measures of a checked solid that the model keeps.
+struct SolidMeasures {  // plain doubles: sent from the worker as bytes
+    double volume = 0;
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // bounding box
+};
+
+// The checked solid of `shape` and its measures.
+std::pair<TopoDS_Solid, SolidMeasures> measured_solid(const TopoDS_Shape& shape, const std::string& source,
+                                                      const std::string& kind) {
+    SolidMeasures m;
+    const TopoDS_Solid solid = checked_solid(shape, source, kind, m.volume);
+    Bnd_Box box;
+    BRepBndLib::Add(solid, box, false);
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    const double lo[3] = {x0, y0, z0}, hi[3] = {x1, y1, z1};
+    std::copy(lo, lo + 3, m.lo);
+    std::copy(hi, hi + 3, m.hi);
+    return {solid, m};
+}
+
+// The model of a checked solid: its sub-shape maps and measures.
+BrepModel model_of(const TopoDS_Solid& solid, const SolidMeasures& m, const std::string& path, const std::string& kind) {
     auto data = std::make_shared<BrepModel::Shape>();
     data->solid = solid;
     TopExp::MapShapes(solid, TopAbs_FACE, data->faces);
     TopExp::MapShapes(solid, TopAbs_EDGE, data->edges);
     TopExp::MapShapes(solid, TopAbs_VERTEX, data->vertices);
-
     BrepModel model;
     model.path = path;
     model.kind = kind;
     model.num_faces = data->faces.Extent();
     model.num_edges = data->edges.Extent();
     model.num_vertices = data->vertices.Extent();
-    model.volume = props.Mass();
-    Bnd_Box box;
-    BRepBndLib::Add(solid, box, false);
-    double x0, y0, z0, x1, y1, z1;
-    box.Get(x0, y0, z0, x1, y1, z1);
-    model.bbox_min = Eigen::Vector3d(x0, y0, z0);
-    model.bbox_max = Eigen::Vector3d(x1, y1, z1);
+    model.volume = m.volume;
+    model.bbox_min = Eigen::Vector3d(m.lo[0], m.lo[1], m.lo[2]);
+    model.bbox_max = Eigen::Vector3d(m.hi[0], m.hi[1], m.hi[2]);
     model.shape = std::move(data);
     return model;
 }
@@ -180,7 +197,7 @@ double load_timeout_s(double bytes) {
 }
 
 // Reads and checks in a worker process (isolation.h): a crash or a hang of OCCT on a damaged file
-// becomes an Error. The solid comes back in OCCT's exact binary BREP format.
+// becomes an Error. The solid comes back in OCCT's exact binary BREP format, after its measures.
 BrepModel load_isolated(const std::string& source, const std::string& path, const std::string& kind, double bytes,
                         const std::function<TopoDS_Shape()>& read) {
     const IsolatedTask task{"load", "OpenCASCADE, reading " + source,
@@ -191,16 +208,21 @@ BrepModel load_isolated(const std::string& source, const std::string& path, cons
         // worker this silences only the worker.
         if (isolation_enabled()) Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
         return occt_call("load", source, [&] {
+            const auto [solid, m] = measured_solid(read(), source, kind);
             std::ostringstream out;
-            BinTools::Write(checked_solid(read(), source, kind), out);
+            out.write(reinterpret_cast<const char*>(&m), sizeof m);
+            BinTools::Write(solid, out);
             return out.str();
         });
     });
+    FF_ASSERT(bytes_out.size() > sizeof(SolidMeasures));
+    SolidMeasures m;
+    std::memcpy(&m, bytes_out.data(), sizeof m);
     return occt_call("load", source, [&] {
-        std::istringstream in(bytes_out);
+        std::istringstream in(bytes_out.substr(sizeof m));
         TopoDS_Shape shape;
         BinTools::Read(shape, in);
-        return model_of(TopoDS::Solid(shape), path, kind);
+        return model_of(TopoDS::Solid(shape), m, path, kind);
     });
 }
 
@@ -208,7 +230,10 @@ BrepModel load_isolated(const std::string& source, const std::string& path, cons
 
 BrepModel make_model(const TopoDS_Shape& shape, const std::string& source, const std::string& path,
                      const std::string& kind) {
-    return occt_call("load", source, [&] { return model_of(checked_solid(shape, source, kind), path, kind); });
+    return occt_call("load", source, [&] {
+        const auto [solid, m] = measured_solid(shape, source, kind);
+        return model_of(solid, m, path, kind);
+    });
 }
 
 BrepModel load_shape(const std::string& path) {

@@ -113,6 +113,9 @@ bool isolation_enabled() {
 
 std::string run_isolated(const IsolatedTask& task, const std::function<std::string()>& work) {
     if (!isolation_enabled()) return work();
+    // What this process has buffered must not be written twice: by the worker too, if a library
+    // there flushes stdout.
+    std::fflush(nullptr);
     int fds[2];
     if (::pipe(fds) != 0) throw Error(task.stage, std::string("cannot create a pipe: ") + std::strerror(errno));
     const pid_t pid = ::fork();

@@ -26,11 +26,6 @@ struct Constraints {
 // free inside. Feature valences come from `features` (keyed by the mesh's edge tags).
 Constraints boundary_constraints(const TetMesh& mesh, const FeatureSet& features);
 
-// Transitional form for pipeline/, whose rewrite drops the topology argument; remove then.
-inline Constraints boundary_constraints(const TetMesh& mesh, const TetTopology& /*unused*/, const FeatureSet& features) {
-    return boundary_constraints(mesh, features);
-}
-
 // Sparse solver of the diffusion systems (linear_solver.h). ConjugateGradient won the
 // measurement in bench/bench_field.cpp (see the commit message / report); the direct ones stay
 // selectable for comparison.

@@ -130,7 +130,7 @@ RunResult run(const RunInput& input, const RunOptions& o) {
     if (done(Stage::mesh)) return r;
     timed(t.field, t, [&] {
         report(o.progress, "field", 0.0);
-        r.field = detail::solve_field(*r.mesh, boundary_constraints(r.mesh->tets, r.mesh->topology, r.mesh->features), o,
+        r.field = detail::solve_field(*r.mesh, boundary_constraints(r.mesh->tets, r.mesh->features), o,
                                       o.progress);
         report(o.progress, "field", 1.0);
     });
