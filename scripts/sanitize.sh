@@ -12,4 +12,4 @@ cmake --build asan-build -j"$(nproc)"
 # Leaks are not checked: OCCT keeps its handle caches until exit. Any UB report fails the test.
 export ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 cd asan-build
-ctest -L "backend|cli" --output-on-failure -j"$(nproc)" "$@"
+ctest -L "backend|cli" -LE "workbench|gui" --output-on-failure -j"$(nproc)" "$@"

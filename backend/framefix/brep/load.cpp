@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -15,7 +14,6 @@
 #include <BRepGProp.hxx>
 #include <BRepLib.hxx>
 #include <BRepTools.hxx>
-#include <BinTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -146,9 +144,9 @@ TopoDS_Solid checked_solid(const TopoDS_Shape& shape, const std::string& source,
 }
 
 // The measures of a checked solid that the model keeps.
-struct SolidMeasures {  // plain doubles: sent from the worker as bytes
+struct SolidMeasures {
     double volume = 0;
-    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // bounding box
+    Eigen::Vector3d lo, hi;  // bounding box
 };
 
 // The checked solid of `shape` and its measures.
@@ -160,9 +158,8 @@ std::pair<TopoDS_Solid, SolidMeasures> measured_solid(const TopoDS_Shape& shape,
     BRepBndLib::Add(solid, box, false);
     double x0, y0, z0, x1, y1, z1;
     box.Get(x0, y0, z0, x1, y1, z1);
-    const double lo[3] = {x0, y0, z0}, hi[3] = {x1, y1, z1};
-    std::copy(lo, lo + 3, m.lo);
-    std::copy(hi, hi + 3, m.hi);
+    m.lo = Eigen::Vector3d(x0, y0, z0);
+    m.hi = Eigen::Vector3d(x1, y1, z1);
     return {solid, m};
 }
 
@@ -180,8 +177,8 @@ BrepModel model_of(const TopoDS_Solid& solid, const SolidMeasures& m, const std:
     model.num_edges = data->edges.Extent();
     model.num_vertices = data->vertices.Extent();
     model.volume = m.volume;
-    model.bbox_min = Eigen::Vector3d(m.lo[0], m.lo[1], m.lo[2]);
-    model.bbox_max = Eigen::Vector3d(m.hi[0], m.hi[1], m.hi[2]);
+    model.bbox_min = m.lo;
+    model.bbox_max = m.hi;
     model.shape = std::move(data);
     return model;
 }
@@ -196,34 +193,39 @@ double load_timeout_s(double bytes) {
     return kLoadBaseSeconds + kLoadSecondsPerMB * bytes / 1e6;
 }
 
-// Reads and checks in a worker process (isolation.h): a crash or a hang of OCCT on a damaged file
-// becomes an Error. The solid comes back in OCCT's exact binary BREP format, after its measures.
+// OCCT's readers print diagnostics on stdout, which belongs to the CLI's summary. The printers
+// are taken off for one read and put back after, so a host (FreeCAD) keeps its own.
+class QuietOcct {
+public:
+    QuietOcct() : saved_(Message::DefaultMessenger()->Printers()) {
+        Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+    }
+    ~QuietOcct() { Message::DefaultMessenger()->ChangePrinters() = saved_; }
+    QuietOcct(const QuietOcct&) = delete;
+    QuietOcct& operator=(const QuietOcct&) = delete;
+
+private:
+    Message_SequenceOfPrinters saved_;
+};
+
+// Reads and checks `read()` in a worker process first (isolation.h): a crash or a hang of OCCT on
+// a damaged file becomes an Error there. Only then the same read runs here, on the same memory
+// state the worker started from. The solid is not sent back: rebuilt from OCCT's binary or text
+// BREP it meshes differently on some parts (HexMe s01o, n06o: state those formats do not keep).
 BrepModel load_isolated(const std::string& source, const std::string& path, const std::string& kind, double bytes,
                         const std::function<TopoDS_Shape()>& read) {
     const IsolatedTask task{"load", "OpenCASCADE, reading " + source,
                             "the file is damaged or uses geometry OCCT cannot read; re-export it from the CAD system",
                             load_timeout_s(bytes)};
-    const std::string bytes_out = run_isolated(task, [&] {
-        // The readers print their diagnostics on stdout, which belongs to the CLI's summary; in the
-        // worker this silences only the worker.
-        if (isolation_enabled()) Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+    const auto read_and_check = [&] {
+        const QuietOcct quiet;
         return occt_call("load", source, [&] {
             const auto [solid, m] = measured_solid(read(), source, kind);
-            std::ostringstream out;
-            out.write(reinterpret_cast<const char*>(&m), sizeof m);
-            BinTools::Write(solid, out);
-            return out.str();
+            return model_of(solid, m, path, kind);
         });
-    });
-    FF_ASSERT(bytes_out.size() > sizeof(SolidMeasures));
-    SolidMeasures m;
-    std::memcpy(&m, bytes_out.data(), sizeof m);
-    return occt_call("load", source, [&] {
-        std::istringstream in(bytes_out.substr(sizeof m));
-        TopoDS_Shape shape;
-        BinTools::Read(shape, in);
-        return model_of(TopoDS::Solid(shape), m, path, kind);
-    });
+    };
+    if (isolation_enabled()) run_isolated(task, [&] { return (read_and_check(), std::string()); });
+    return read_and_check();
 }
 
 }  // namespace
