@@ -1,8 +1,7 @@
 // bench_blocks [--size H] [--tets N] [--threads T] [--blocks] SAMPLE...
-// analyze -> (snap the 3-5 curves if any, re-solve) -> build_blocks, for each sample (a path or a
+// run() to the blocks stage (snapping the 3-5 curves first, if any), for each sample (a path or a
 // name in samples/). Prints the block counts, validity, conformity, flat edges/corners and the cost
 // of sheets / partition / validation next to the field solve (the target: blocks < field).
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -17,9 +16,7 @@ using namespace framefix;
 
 namespace {
 
-using bench::Clock;
 using bench::resolve;
-using bench::since;
 
 }  // namespace
 

@@ -3,16 +3,25 @@
 #include "framefix/mesh/tet_mesh.h"
 
 namespace framefix {
+namespace {
+
+// Every array of the mesh, in one order for writing and reading.
+template <class Mesh, class F>
+void each_array(Mesh& m, F&& f) {
+    f(m.points);
+    f(m.tets);
+    f(m.boundary_faces);
+    f(m.face_tags);
+    f(m.feature_edges);
+    f(m.edge_tags);
+    f(m.corner_vertices);
+}
+
+}  // namespace
 
 std::string tet_mesh_bytes(const TetMesh& m) {
     ByteWriter w;
-    w.matrix(m.points);
-    w.matrix(m.tets);
-    w.matrix(m.boundary_faces);
-    w.matrix(m.face_tags);
-    w.matrix(m.feature_edges);
-    w.matrix(m.edge_tags);
-    w.matrix(m.corner_vertices);
+    each_array(m, [&](const auto& a) { w.matrix(a); });
     w.value(m.size);
     return w.take();
 }
@@ -20,13 +29,7 @@ std::string tet_mesh_bytes(const TetMesh& m) {
 TetMesh tet_mesh_from_bytes(const std::string& bytes) {
     ByteReader r(bytes);
     TetMesh m;
-    r.matrix(m.points);
-    r.matrix(m.tets);
-    r.matrix(m.boundary_faces);
-    r.matrix(m.face_tags);
-    r.matrix(m.feature_edges);
-    r.matrix(m.edge_tags);
-    r.matrix(m.corner_vertices);
+    each_array(m, [&](auto& a) { r.matrix(a); });
     m.size = r.value<double>();
     FF_ASSERT(r.done());
     return m;
