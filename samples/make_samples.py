@@ -112,6 +112,42 @@ def write_bad_inputs():
     notch_solid.exportBrep(os.path.join(DATA, 'notch.brep'))
 
 
+def thin_cap():
+    """A spherical shell 0.4 thick on a radius of 20, cut below its pole: thin and curved, sound."""
+    shell = Part.makeSphere(20).cut(Part.makeSphere(19.6))
+    return shell.common(Part.makeBox(80, 80, 40, V(-40, -40, 6))).removeSplitter()
+
+
+def looped_blade():
+    """A blade lofted through two airfoil sections whose spline loops at the sharp trailing edge:
+    BRepCheck passes it, OCCT's self-intersection check does not."""
+    import math
+    wires = []
+    for z, chord, twist in [(0, 40, 0), (100, 25, 40)]:
+        pts = []
+        for i in range(16):
+            x = 0.5 * (1 + math.cos(2 * math.pi * i / 16))
+            yt = 0.6 * (0.2969 * math.sqrt(x) - 0.126 * x - 0.3516 * x ** 2 + 0.2843 * x ** 3 - 0.1036 * x ** 4)
+            y = 0.16 * x * (1 - x) + (yt if i < 8 else -yt) * (i != 0)
+            c, s = math.cos(math.radians(twist)), math.sin(math.radians(twist))
+            px, py = (x - 0.3) * chord, y * chord
+            pts.append(V(c * px - s * py, s * px + c * py, z))
+        curve = Part.BSplineCurve()
+        curve.interpolate(pts, PeriodicFlag=True)
+        wires.append(Part.Wire([curve.toShape()]))
+    solid = Part.makeLoft(wires, True, False).Solids[0]
+    return solid if solid.Volume > 0 else solid.reversed()
+
+
+def write_meshing_cases():
+    """Parts that test the meshing's own robustness (tests/cli/test_mesh_recovery.py)."""
+    single_solid(thin_cap(), 'thin_cap').exportStep(os.path.join(DATA, 'thin_cap.step'))
+    blade = looped_blade()
+    if not blade.isValid():
+        raise RuntimeError('looped_blade: BRepCheck must pass it')
+    blade.exportStep(os.path.join(DATA, 'looped_blade.step'))
+
+
 def main():
     for make in SAMPLES:
         solid = single_solid(make(), make.__name__)
@@ -120,6 +156,7 @@ def main():
         print('%-16s faces %2d edges %2d volume %.5f' % (make.__name__, len(solid.Faces),
                                                           len(solid.Edges), solid.Volume))
     write_bad_inputs()
+    write_meshing_cases()
 
 
 if __name__ == '__main__':

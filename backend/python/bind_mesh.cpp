@@ -4,7 +4,7 @@
 #include "bindings.h"
 #include "framefix/brep/brep_model.h"
 #include "framefix/mesh/tet_mesh.h"
-#include "framefix/tetgen/tetrahedralize.h"
+#include "framefix/pipeline/mesh_attempts.h"
 
 namespace py = pybind11;
 
@@ -39,7 +39,7 @@ void bind_mesh(py::module_& m) {
             MeshOptions o;
             o.size = size > 0 ? size : default_size(shape, o.target_tets);
             const FeatureSet features = classify_features(shape);
-            return tetrahedralize(tessellate(shape, features, o), o);
+            return mesh_brep(shape, features, o).tets;
         },
         py::arg("shape"), py::arg("size") = 0.0, py::call_guard<py::gil_scoped_release>(),
         "Near-uniform tet mesh of the solid at edge length size (0: about 50k tets)");

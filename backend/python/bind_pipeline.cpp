@@ -64,6 +64,14 @@ void bind_result(py::module_& m) {
         .def_readonly("input_path", &RunResult::input_path)
         .def_readonly("input_kind", &RunResult::input_kind)
         .def_property_readonly("mesh", [](const RunResult& r) { return r.mesh ? py::cast(r.mesh->tets) : py::none(); })
+        .def_property_readonly("mesh_attempts", [](const RunResult& r) {
+            py::list out;  // how the tets were made: the last entry meshed
+            if (r.mesh)
+                for (const MeshAttempt& a : r.mesh->attempts)
+                    out.append(py::dict(py::arg("how") = a.how,
+                                        py::arg("failure") = a.failure.empty() ? py::object(py::none()) : py::cast(a.failure)));
+            return out;
+        })
         .def_property_readonly("features", [](const RunResult& r) {
             return r.mesh ? r.mesh->features.edges : std::vector<EdgeFeature>{};
         })

@@ -81,3 +81,13 @@ def test_thread_count_is_per_call_and_results_do_not_depend_on_it():
         del r["timings_s"], r["peak_memory_mb"]
     assert one == two
     assert gomp.omp_get_max_threads() == threads_before  # the host process is left as it was
+
+
+def test_tetgen_crash_in_process_is_retried_and_the_interpreter_lives(monkeypatch):
+    """TetGen crashing (injected) inside framefix.analyze: the worker dies, not this interpreter,
+    and the mesh stage meshes on its second way."""
+    monkeypatch.setenv("FRAMEFIX_FAULT", "tetgen-keep-boundary")
+    r = framefix.analyze(NOTCH, size_factor=COARSE)
+    assert [a["failure"] is None for a in r.mesh_attempts] == [False, True]
+    assert "crashed" in r.mesh_attempts[0]["failure"]
+    assert r.singularities.summary["curves_3_5"] == 1

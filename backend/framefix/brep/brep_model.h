@@ -45,6 +45,10 @@ double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d&
 // Size h for about `target_tets` near-uniform tets in this solid.
 double default_size(const BrepModel& model, int target_tets = kDefaultTargetTets);
 
+// Faces (1-based) that OCCT's self-interference test finds crossing another face or themselves;
+// empty for a sound solid. Runs in a worker process; meant for the failure path (it is slow).
+Eigen::VectorXi self_intersecting_faces(const BrepModel& model);
+
 // OCCT surface triangulation with boundary edges near h, faces and feature segments tagged.
 SurfaceMesh tessellate(const BrepModel& model, const FeatureSet& features, const MeshOptions& options);
 

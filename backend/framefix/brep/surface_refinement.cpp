@@ -125,6 +125,12 @@ struct Refiner {
         }
     }
 
+    bool halves(const Eigen::Vector3d& p, int a, int b) const {
+        const Eigen::Vector3d pa = s.points[size_t(a)], pb = s.points[size_t(b)];
+        const double len = (pa - pb).norm();
+        return (p - pa).norm() < 0.8 * len && (p - pb).norm() < 0.8 * len;
+    }
+
     void split(int a, int b) {
         const Key key = edge_key(a, b, kAnyIdStride);
         const std::vector<int> tris = edge_tris.at(key);
@@ -137,7 +143,7 @@ struct Refiner {
             t_mid = 0.5 * (ce.t_lo + ce.t_hi);
         }
         const int m = int(s.points.size());
-        bool placed = false;
+        bool placed = false, projected = false;
         for (int tri : tris) {
             unlink(tri);
             TaggedSurface::Triangle t = s.triangles[size_t(tri)];
@@ -152,14 +158,18 @@ struct Refiner {
             if (on_curve) uv = eval.edge_uv(ce.edge, t.face, t_mid, uv);
             if (!placed) {
                 Eigen::Vector3d p = on_curve ? eval.on_edge(ce.edge, t_mid) : eval.on_face(t.face, uv);
-                // A point that does not halve the edge means inconsistent parameters: fall back
-                // to the chord midpoint rather than split forever.
-                const Eigen::Vector3d pa = s.points[size_t(a)], pb = s.points[size_t(b)];
-                const double len = (pa - pb).norm();
-                if (!((p - pa).norm() < 0.8 * len && (p - pb).norm() < 0.8 * len)) p = 0.5 * (pa + pb);
+                if (!halves(p, a, b) && !on_curve) {
+                    // The corners' parameters lie in different copies of the domain (a pole, a
+                    // seam): the surface point nearest the chord's midpoint halves the edge.
+                    p = eval.on_face(t.face, eval.project(t.face, 0.5 * (s.points[size_t(a)] + s.points[size_t(b)]), uv));
+                    projected = true;
+                }
+                // Still no halving point: the chord midpoint, rather than split forever.
+                if (!halves(p, a, b)) p = 0.5 * (s.points[size_t(a)] + s.points[size_t(b)]);
                 s.points.push_back(p);
                 placed = true;
             }
+            if (projected) uv = eval.project(t.face, s.points[size_t(m)], uv);
             TaggedSurface::Triangle first = t, second = t;
             first.v[i1] = m;
             first.uv[i1] = uv;

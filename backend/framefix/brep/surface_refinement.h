@@ -39,6 +39,8 @@ struct SurfaceEvaluator {
     std::function<Eigen::Vector3d(int face, const Eigen::Vector2d& uv)> normal;
     // Parameters on `face` of the point at parameter t of `edge`; near_uv picks the side of a seam.
     std::function<Eigen::Vector2d(int edge, int face, double t, const Eigen::Vector2d& near_uv)> edge_uv;
+    // Parameters on `face` of the surface point nearest p, searched from near_uv.
+    std::function<Eigen::Vector2d(int face, const Eigen::Vector3d& p, const Eigen::Vector2d& near_uv)> project;
 };
 
 // Splits edges longer than max_edge (model units), longest first, each split bisecting both

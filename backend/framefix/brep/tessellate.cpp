@@ -17,6 +17,7 @@
 #include <IMeshTools_Parameters.hxx>
 #include <Poly_PolygonOnTriangulation.hxx>
 #include <Poly_Triangulation.hxx>
+#include <ShapeAnalysis_Surface.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -148,6 +149,7 @@ public:
         for (int f = 1; f <= shape.faces.Extent(); ++f) {
             surfaces_.emplace_back(TopoDS::Face(shape.faces(f)));
             normals_.emplace_back(oriented_face(f));
+            projectors_.push_back(new ShapeAnalysis_Surface(BRep_Tool::Surface(TopoDS::Face(shape.faces(f)))));
         }
         for (int e = 1; e <= shape.edges.Extent(); ++e) curves_.emplace_back(TopoDS::Edge(shape.edges(e)));
     }
@@ -178,10 +180,17 @@ public:
             }
             return best;
         };
+        eval.project = [this](int f, const Eigen::Vector3d& p, const Eigen::Vector2d& near) {
+            const gp_Pnt2d uv = projectors_[size_t(f - 1)]->NextValueOfUV(gp_Pnt2d(near.x(), near.y()),
+                                                                         gp_Pnt(p.x(), p.y(), p.z()), kProjectionTol);
+            return Eigen::Vector2d(uv.X(), uv.Y());
+        };
         return eval;
     }
 
 private:
+    static constexpr double kProjectionTol = 1e-9;  // model units: the exact nearest point
+
     static Eigen::Vector3d to_eigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
     // The edge's pcurves on the face: two for a seam.
@@ -206,6 +215,7 @@ private:
     TopoDS_Shape solid_;
     std::vector<BRepAdaptor_Surface> surfaces_;
     std::vector<BRepGProp_Face> normals_;
+    std::vector<Handle(ShapeAnalysis_Surface)> projectors_;  // located surfaces, like surfaces_
     std::vector<BRepAdaptor_Curve> curves_;
     std::map<std::pair<int, int>, std::vector<BRepAdaptor_Curve2d>> pcurves_;
 };

@@ -87,12 +87,14 @@ void default_crash_signals() {
     ::_exit(0);
 }
 
+std::string hint(const IsolatedTask& task) { return task.hint.empty() ? "" : "; " + task.hint; }
+
 std::string outcome(const IsolatedTask& task, const std::string& message, int status) {
     if (WIFSIGNALED(status))
-        throw Error(task.stage, task.what + " crashed (" + strsignal(WTERMSIG(status)) + "); " + task.hint);
+        throw Error(task.stage, task.what + " crashed (" + strsignal(WTERMSIG(status)) + ")" + hint(task));
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || message.empty())
         throw Error(task.stage, task.what + " stopped unexpectedly (exit code " +
-                                    std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "); " + task.hint);
+                                    std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")" + hint(task));
     switch (message[0]) {
         case kResult: return message.substr(1);
         case kError: {
@@ -100,7 +102,7 @@ std::string outcome(const IsolatedTask& task, const std::string& message, int st
             throw Error(message.substr(1, cut - 1), message.substr(cut + 1));
         }
         case kNoMemory: throw std::bad_alloc();
-        default: throw Error(task.stage, task.what + " failed: " + message.substr(1) + "; " + task.hint);
+        default: throw Error(task.stage, task.what + " failed: " + message.substr(1) + hint(task));
     }
 }
 
@@ -141,7 +143,7 @@ std::string run_isolated(const IsolatedTask& task, const std::function<std::stri
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     if (!finished)
-        throw Error(task.stage, task.what + " did not finish within " + seconds(task.timeout_s) + "; " + task.hint);
+        throw Error(task.stage, task.what + " did not finish within " + seconds(task.timeout_s) + hint(task));
     return outcome(task, message, status);
 }
 

@@ -19,8 +19,8 @@ struct IsolatedTask {
 
 // Runs work() in a child process and returns the bytes it returned. framefix::Error and
 // std::bad_alloc thrown in the child are rethrown here; a signal or an unexpected exit becomes
-// Error(task.stage, task.what + " crashed (<signal>); " + task.hint); so does a child that runs
-// past task.timeout_s, which is killed.
+// Error(task.stage, task.what + " crashed (<signal>); " + task.hint), without "; " for an empty
+// hint; so does a child that runs past task.timeout_s, which is killed.
 // With isolation off (see isolation_enabled) work() runs in this process.
 std::string run_isolated(const IsolatedTask& task, const std::function<std::string()>& work);
 

@@ -9,8 +9,8 @@
 #include "framefix/mesh/crease_features.h"
 #include "framefix/mesh/mesh_io.h"
 #include "framefix/pipeline/correction_methods.h"
+#include "framefix/pipeline/mesh_attempts.h"
 #include "framefix/pipeline/solve_stages.h"
-#include "framefix/tetgen/tetrahedralize.h"
 
 namespace framefix {
 namespace {
@@ -55,9 +55,9 @@ MeshStage mesh(const RunResult& r, std::optional<TetMesh> tets, const RunOptions
         m.features = classify_features(*r.model, o.features);
         MeshOptions mo = o.mesh;
         if (mo.size <= 0) mo.size = default_size(*r.model, mo.target_tets) * o.size_factor;
-        const SurfaceMesh surface = tessellate(*r.model, m.features, mo);
-        report(o.progress, "mesh", 0.3);
-        m.tets = tetrahedralize(surface, mo);
+        BrepMeshing meshing = mesh_brep(*r.model, m.features, mo);
+        m.tets = std::move(meshing.tets);
+        m.attempts = std::move(meshing.attempts);
     }
     m.topology = build_topology(m.tets);
     report(o.progress, "mesh", 1.0);

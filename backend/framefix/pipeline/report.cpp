@@ -120,6 +120,14 @@ json timings_json(const RunResult& r) {
     return t;
 }
 
+// One entry per way the B-rep was meshed, the last one the way that worked.
+json attempts_json(const std::vector<MeshAttempt>& attempts) {
+    json list = json::array();
+    for (const MeshAttempt& a : attempts)
+        list.push_back({{"how", a.how}, {"failure", a.failure.empty() ? json(nullptr) : json(a.failure)}});
+    return list;
+}
+
 }  // namespace
 
 std::string report_json(const RunResult& r) {
@@ -129,6 +137,7 @@ std::string report_json(const RunResult& r) {
     if (r.mesh) {
         const TetMesh& m = r.mesh->tets;
         j["mesh"] = {{"vertices", m.num_vertices()}, {"tets", m.num_tets()}, {"size", m.size}};
+        if (!r.mesh->attempts.empty()) j["mesh"]["attempts"] = attempts_json(r.mesh->attempts);
         add_features(j, *r.mesh);
     }
     if (r.field) {

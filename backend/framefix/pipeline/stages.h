@@ -7,6 +7,7 @@
 #include "framefix/mesh/features.h"
 #include "framefix/mesh/tet_mesh.h"
 #include "framefix/mesh/tet_topology.h"
+#include "framefix/pipeline/mesh_attempts.h"
 #include "framefix/singularities/singularity_graph.h"
 
 namespace framefix {
@@ -21,6 +22,7 @@ struct MeshStage {              // feature curves and the tet mesh that carries 
     FeatureSet features;
     TetMesh tets;
     TetTopology topology;
+    std::vector<MeshAttempt> attempts;  // how the tets were made from a B-rep; empty for a mesh file
 };
 
 struct FieldStage {             // boundary conditions and the frame field solved under them

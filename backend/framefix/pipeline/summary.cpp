@@ -43,6 +43,9 @@ std::string human_summary(const RunResult& r) {
              ", " + std::to_string(blocks->conforming_pairs) + "/" + std::to_string(blocks->pairs) + " pairs conforming";
         if (blocks->flat_edges) s += ", " + std::to_string(blocks->flat_edges) + " flat edge" + (blocks->flat_edges == 1 ? "" : "s");
     }
+    if (r.mesh && r.mesh->attempts.size() > 1)
+        s += "; meshed on try " + std::to_string(r.mesh->attempts.size()) + " (" + r.mesh->attempts.back().how +
+             ") after: " + r.mesh->attempts.front().failure;
     char t[32];
     std::snprintf(t, sizeof t, "; %.1f s", r.timings.total);
     return s + t;

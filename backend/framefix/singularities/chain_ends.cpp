@@ -9,6 +9,8 @@
 namespace framefix::detail {
 namespace {
 
+constexpr size_t kJunkFaces = 2;  // a chain this short cannot leave its node's tet star
+
 std::vector<int> end_boundary_verts(const ChainContext& c, const RawEnd& e) {
     std::vector<int> v;
     if (e.tet < 0) {
@@ -37,6 +39,19 @@ bool touches_boundary(const ChainContext& c, int t) {
     for (int k = 0; k < 4; ++k)
         if (c.topo.on_boundary[c.mesh.tets(t, k)]) return true;
     return false;
+}
+
+// A chain from a node back to the same node that stays within one edge length of where it
+// leaves (or has at most two triangles): a kink of the field around one junction tet or one
+// boundary vertex, not a curve (docs/algorithms.md#chain-ends-and-nodes).
+bool is_junk(const ChainContext& c, const RawChain& ch, double h) {
+    const RawEnd &a = ch.ends[0], &b = ch.ends[1];
+    if (ch.closed || a.type != b.type || a.group != b.group || a.type == EndType::Dead) return false;
+    if (ch.faces.size() <= kJunkFaces) return true;
+    const Eigen::Vector3d at = end_position(c, a);
+    for (int f : ch.faces)
+        if ((face_centroid(c.mesh, c.topo, f) - at).norm() > h) return false;
+    return true;
 }
 
 }  // namespace
@@ -126,8 +141,7 @@ void assemble(const ChainContext& c, const std::vector<RawChain>& chains, ChainG
 
     std::vector<int> cluster_node(c.nclusters, -1);
     for (const RawChain& ch : chains) {
-        if (!ch.closed && ch.faces.size() <= 2 && ch.ends[0].type == EndType::Junction &&
-            ch.ends[1].type == EndType::Junction && ch.ends[0].group == ch.ends[1].group) {
+        if (is_junk(c, ch, graph.h_mean)) {
             ++graph.junk_chains;
             continue;
         }

@@ -2,7 +2,11 @@
 // already refined to edge length ~h, see brep/surface_refinement.h) -q1.3/15 (radius-edge ratio /
 // min dihedral) -a (volume bound from h) -z (0-based) -e (edges, for the feature tags) -Q (quiet).
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <optional>
 #include <cstdio>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,15 +26,22 @@ namespace {
 // (a regular tet of edge h has volume 0.118 h^3; TetGen's tets are less regular).
 constexpr double kVolumeFactor = 0.2;
 
-std::string tetgen_failure(int code) {
+// Returns from the worker: TetGen's failures come back as data, so that whatever arrives as an
+// Error from run_isolated is a crash.
+struct Failure {
+    TetgenStatus status;
+    std::string message;
+};
+
+Failure tetgen_failure(int code) {
     switch (code) {
-    case 1: return "TetGen ran out of memory; use a larger size";
-    case 2: return "TetGen hit an internal error; try a slightly different size";
-    case 3: return "the surface triangulation self-intersects; check the solid for self-intersections";
-    case 4: return "the solid has a feature much smaller than the size; use a smaller size or remove it";
-    case 5: return "two boundary facets are nearly coincident; check the solid for overlapping faces";
-    case 10: return "TetGen rejected the input surface (not a closed PLC)";
-    default: return "TetGen failed with code " + std::to_string(code);
+    case 1: return {TetgenStatus::failed, "TetGen ran out of memory; use a larger size"};
+    case 2: return {TetgenStatus::recovery_failed, "TetGen hit an internal error in boundary recovery"};
+    case 3: return {TetgenStatus::self_intersecting, "the surface triangulation self-intersects"};
+    case 4: return {TetgenStatus::recovery_failed, "the solid has a feature much smaller than the size"};
+    case 5: return {TetgenStatus::recovery_failed, "two boundary facets are nearly coincident"};
+    case 10: return {TetgenStatus::failed, "TetGen rejected the input surface (not a closed PLC)"};
+    default: return {TetgenStatus::failed, "TetGen failed with code " + std::to_string(code)};
     }
 }
 
@@ -77,39 +88,71 @@ void fill_input(const SurfaceMesh& s, tetgenio& in) {
     }
 }
 
+// "N triangles involved, on Face3 and Face5, near (x, y, z)": where to look in the CAD.
+std::string intersection_place(const tetgenio& report) {
+    std::set<int> faces;
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int f = 0; f < report.numberoftrifaces; ++f) {
+        if (report.trifacemarkerlist) faces.insert(report.trifacemarkerlist[f]);
+        for (int k = 0; k < 3; ++k) {
+            const REAL* p = &report.pointlist[3 * report.trifacelist[3 * f + k]];
+            sum += Eigen::Vector3d(p[0], p[1], p[2]) / 3.0;
+        }
+    }
+    std::string text = std::to_string(report.numberoftrifaces) + " triangles involved, on";
+    for (int face : faces) text += " Face" + std::to_string(face);
+    const Eigen::Vector3d c = sum / double(std::max(1, report.numberoftrifaces));
+    char where[96];
+    std::snprintf(where, sizeof where, ", near (%.4g, %.4g, %.4g)", c.x(), c.y(), c.z());
+    return text + where;
+}
+
 // TetGen 1.5 can crash (not throw) when the PLC intersects itself, so its -d check runs first.
-void check_self_intersections(tetgenio& in) {
+std::optional<Failure> check_self_intersections(tetgenio& in) {
     tetgenio report;
     char switches[] = "pdzQ";
     try {
         ::tetrahedralize(switches, &in, &report);
     } catch (int code) {
-        throw Error("mesh", tetgen_failure(code));
+        return tetgen_failure(code);
     }
-    if (report.numberoftrifaces > 0)
-        throw Error("mesh", tetgen_failure(3) + " (" + std::to_string(report.numberoftrifaces) + " triangles involved)");
+    if (report.numberoftrifaces == 0) return std::nullopt;
+    return Failure{TetgenStatus::self_intersecting, tetgen_failure(3).message + " (" + intersection_place(report) + ")"};
 }
 
-TetMesh run_tetgen(const SurfaceMesh& surface, double h) {
+// Test hook (FRAMEFIX_FAULT=tetgen-keep-boundary): the worker crashes as TetGen's boundary
+// recovery does on some industrial parts, so that the recovery attempts can be tested.
+void injected_fault(bool keep_boundary) {
+    const char* fault = std::getenv("FRAMEFIX_FAULT");
+    if (keep_boundary && fault && std::string(fault) == "tetgen-keep-boundary") std::raise(SIGSEGV);
+}
+
+// In the worker: status byte, then the mesh's bytes or the failure's message.
+std::string run_tetgen(const SurfaceMesh& surface, double h, bool keep_boundary) {
     tetgenio in, out;
     fill_input(surface, in);
-    check_self_intersections(in);
-    char switches[128];
-    std::snprintf(switches, sizeof switches, "pYq1.3/15a%.17gzeQ", kVolumeFactor * h * h * h);
-    try {
-        ::tetrahedralize(switches, &in, &out);
-    } catch (int code) {
-        throw Error("mesh", tetgen_failure(code));
-    } catch (const std::bad_alloc&) {
-        throw Error("mesh", tetgen_failure(1));
+    std::optional<Failure> failure = check_self_intersections(in);
+    if (!failure) {
+        injected_fault(keep_boundary);
+        char switches[128];
+        std::snprintf(switches, sizeof switches, "p%sq1.3/15a%.17gzeQ", keep_boundary ? "Y" : "", kVolumeFactor * h * h * h);
+        try {
+            ::tetrahedralize(switches, &in, &out);
+        } catch (int code) {
+            failure = tetgen_failure(code);
+        } catch (const std::bad_alloc&) {
+            failure = tetgen_failure(1);
+        }
     }
-    if (out.numberoftetrahedra == 0) throw Error("mesh", "TetGen produced no tets; the surface may not be closed");
-    return tet_mesh_from_tetgen(out, surface);
+    if (!failure && out.numberoftetrahedra == 0)
+        failure = Failure{TetgenStatus::failed, "TetGen produced no tets; the surface may not be closed"};
+    if (failure) return char(failure->status) + failure->message;
+    return char(TetgenStatus::meshed) + tet_mesh_bytes(tet_mesh_from_tetgen(out, surface));
 }
 
 }  // namespace
 
-TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
+TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary) {
     if (surface.triangles.rows() < 4) throw Error("mesh", "the surface has " + std::to_string(surface.triangles.rows()) +
                                                               " triangles; a closed surface needs at least 4");
     const double volume = enclosed_volume(surface);
@@ -118,10 +161,32 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
     check_memory(volume, h, options);
 
     // TetGen can crash in boundary recovery instead of throwing: it runs in a worker process.
-    const IsolatedTask task{"mesh", "TetGen", "try a slightly different --size, or check the solid for tiny faces"};
-    TetMesh mesh = tet_mesh_from_bytes(run_isolated(task, [&] { return tet_mesh_bytes(run_tetgen(surface, h)); }));
-    mesh.size = h;
-    return mesh;
+    // No hint: mesh_brep tries other ways first and ends the message itself.
+    const IsolatedTask task{"mesh", "TetGen", ""};
+    TetgenRun run;
+    std::string bytes;
+    try {
+        bytes = run_isolated(task, [&] { return run_tetgen(surface, h, keep_boundary); });
+    } catch (const Error& e) {
+        run.status = TetgenStatus::crashed;
+        run.message = e.message();
+        return run;
+    }
+    run.status = TetgenStatus(bytes.at(0));
+    if (run.status != TetgenStatus::meshed) {
+        run.message = bytes.substr(1);
+        return run;
+    }
+    run.mesh = tet_mesh_from_bytes(bytes.substr(1));
+    run.mesh.size = h;
+    return run;
+}
+
+TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
+    TetgenRun run = try_tetrahedralize(surface, options, true);
+    if (run.status == TetgenStatus::failed) throw Error("mesh", run.message);
+    if (run.status != TetgenStatus::meshed) throw Error("mesh", run.message + "; try a slightly different --size");
+    return std::move(run.mesh);
 }
 
 }  // namespace framefix

@@ -1,5 +1,7 @@
 #pragma once
 // Near-uniform volume meshing with TetGen: the only module that includes tetgen.h.
+#include <string>
+
 #include "framefix/mesh/size_model.h"
 #include "framefix/mesh/surface_mesh.h"
 #include "framefix/mesh/tet_mesh.h"
@@ -11,5 +13,24 @@ namespace framefix {
 // corner points stay mesh vertices. Refuses (framefix::Error, stage "mesh") sizes whose memory
 // estimate exceeds the limit, and reports TetGen failures (self-intersecting boundary, ...).
 TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options);
+
+// How one TetGen run ended, for callers that try again another way (pipeline/mesh_attempts.h).
+enum class TetgenStatus : char {
+    meshed,
+    self_intersecting,  // the surface crosses itself (TetGen's -d test); no tet was made
+    recovery_failed,    // TetGen gave up recovering the boundary (tiny features, near-coincident facets)
+    crashed,            // the worker died (a signal): TetGen's boundary recovery on some industrial parts
+    failed,             // out of memory, an open surface: trying again will not help
+};
+struct TetgenRun {
+    TetgenStatus status = TetgenStatus::failed;
+    std::string message;  // what failed, for the report; empty when meshed
+    TetMesh mesh;         // when meshed
+};
+
+// tetrahedralize() without throwing for TetGen's failures (bad options still throw).
+// keep_boundary = false lets TetGen split boundary triangles and segments (no -Y); the pieces keep
+// their face and edge tags.
+TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary);
 
 }  // namespace framefix

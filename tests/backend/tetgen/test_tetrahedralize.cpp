@@ -1,5 +1,7 @@
 // TetGen wrapper on PLCs built in code: a unit cube with tagged faces and feature edges.
+#include <cstdlib>
 #include <set>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -132,6 +134,45 @@ TEST(Tetrahedralize, SelfIntersectingSurfaceIsReported) {
         EXPECT_EQ(e.stage(), "mesh");
         EXPECT_NE(e.message().find("self-intersects"), std::string::npos) << e.what();
     }
+    const TetgenRun run = try_tetrahedralize(s, sized(0.3), true);
+    EXPECT_EQ(run.status, TetgenStatus::self_intersecting);
+    EXPECT_NE(run.message.find("on Face"), std::string::npos) << run.message;  // where to look
+    EXPECT_NE(run.message.find("near ("), std::string::npos) << run.message;
+}
+
+// Without -Y TetGen may split boundary triangles and segments; every piece keeps its tag.
+TEST(Tetrahedralize, BoundarySteinerPointsKeepTags) {
+    const SurfaceMesh s = cube();
+    const TetgenRun run = try_tetrahedralize(s, sized(0.15), false);
+    ASSERT_EQ(run.status, TetgenStatus::meshed) << run.message;
+    const TetMesh& mesh = run.mesh;
+    EXPECT_GT(mesh.boundary_faces.rows(), 12);  // split: the cube's faces are longer than 0.15
+    double area = 0;
+    for (int f = 0; f < mesh.boundary_faces.rows(); ++f) {
+        const Eigen::Vector3d a = mesh.points.row(mesh.boundary_faces(f, 0)), b = mesh.points.row(mesh.boundary_faces(f, 1)),
+                              c = mesh.points.row(mesh.boundary_faces(f, 2));
+        const int tag = mesh.face_tags(f), axis = 2 - (tag - 1) / 2;  // tags 1,2: z; 3,4: y; 5,6: x
+        const double side = (tag - 1) % 2;                             // the first of each pair is at 0
+        for (const Eigen::Vector3d& p : {a, b, c}) EXPECT_NEAR(p(axis), side, 1e-12) << "face " << f << " tag " << tag;
+        area += 0.5 * (b - a).cross(c - a).norm();
+    }
+    EXPECT_NEAR(area, 6.0, 1e-9);
+    std::vector<double> length(13, 0.0);  // per edge tag: the pieces add up to the cube's edge
+    for (int e = 0; e < mesh.feature_edges.rows(); ++e)
+        length[size_t(mesh.edge_tags(e))] += (mesh.points.row(mesh.feature_edges(e, 0)) - mesh.points.row(mesh.feature_edges(e, 1))).norm();
+    for (int tag = 1; tag <= 12; ++tag) EXPECT_NEAR(length[size_t(tag)], 1.0, 1e-9) << "Edge" << tag;
+    for (int c = 0; c < 8; ++c) EXPECT_EQ(mesh.points.row(mesh.corner_vertices(c)), s.points.row(c));
+}
+
+// FRAMEFIX_FAULT makes the -Y run crash in its worker: reported as a crash, this process lives.
+TEST(Tetrahedralize, CrashInTheWorkerIsAStatus) {
+    ::setenv("FRAMEFIX_FAULT", "tetgen-keep-boundary", 1);
+    const TetgenRun crashed = try_tetrahedralize(cube(), sized(0.3), true);
+    const TetgenRun steiner = try_tetrahedralize(cube(), sized(0.3), false);
+    ::unsetenv("FRAMEFIX_FAULT");
+    EXPECT_EQ(crashed.status, TetgenStatus::crashed);
+    EXPECT_NE(crashed.message.find("TetGen crashed (Segmentation fault)"), std::string::npos) << crashed.message;
+    EXPECT_EQ(steiner.status, TetgenStatus::meshed) << steiner.message;
 }
 
 }  // namespace

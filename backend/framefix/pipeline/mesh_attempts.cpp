@@ -1,0 +1,92 @@
+#include "framefix/pipeline/mesh_attempts.h"
+
+#include <array>
+#include <cstdio>
+
+#include "framefix/core/error.h"
+#include "framefix/tetgen/tetrahedralize.h"
+
+namespace framefix {
+namespace {
+
+// One way to mesh: the surface's edge length as a fraction of h (the tets keep h), and whether
+// TetGen must keep the surface triangles as they are (-Y).
+struct Plan {
+    double surface_factor;
+    bool keep_boundary;
+    bool for_intersections;  // helps a self-intersecting surface triangulation
+    bool for_recovery;       // helps a crash or a failed boundary recovery
+};
+
+// Finer surfaces follow thin, curved faces closer and give TetGen shorter segments to recover;
+// 0.7 and 0.5 keep the tet count within about 3x of the first try.
+constexpr std::array<Plan, 5> kPlans{{
+    {1.0, true, true, true},
+    {1.0, false, false, true},
+    {0.7, true, true, true},
+    {0.7, false, false, true},
+    {0.5, true, true, false},
+}};
+
+std::string describe(const Plan& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "surface at %.2g h, %s", p.surface_factor,
+                  p.keep_boundary ? "boundary kept" : "boundary Steiner points allowed");
+    return text;
+}
+
+std::string face_list(const Eigen::VectorXi& faces) {
+    std::string text;
+    for (Eigen::Index i = 0; i < faces.size(); ++i) text += (i ? ", Face" : "Face") + std::to_string(faces(i));
+    return text;
+}
+
+// A self-intersecting triangulation of a solid that crosses itself is not ours to fix.
+void refuse_self_intersecting_solid(const BrepModel& model) {
+    const Eigen::VectorXi faces = self_intersecting_faces(model);
+    if (faces.size() > 0)
+        throw Error("mesh", "the solid self-intersects: OpenCASCADE's self-intersection check flags " + face_list(faces) +
+                                "; repair these faces in the CAD tool");
+}
+
+bool plan_helps(const Plan& p, TetgenStatus failure) {
+    return failure == TetgenStatus::self_intersecting ? p.for_intersections : p.for_recovery;
+}
+
+TetgenRun attempt(const BrepModel& model, const FeatureSet& features, const MeshOptions& options, const Plan& p) {
+    MeshOptions surface_options = options;
+    surface_options.size = options.size * p.surface_factor;
+    return try_tetrahedralize(tessellate(model, features, surface_options), options, p.keep_boundary);
+}
+
+std::string final_message(const std::vector<MeshAttempt>& attempts, TetgenStatus first) {
+    std::string text = attempts.front().failure;
+    if (first == TetgenStatus::self_intersecting) text += ", although the solid itself does not self-intersect";
+    if (attempts.size() > 1) text += "; " + std::to_string(attempts.size()) + " ways tried, none meshed";
+    return text + "; try a smaller --size, or report the part";
+}
+
+}  // namespace
+
+BrepMeshing mesh_brep(const BrepModel& model, const FeatureSet& features, const MeshOptions& options) {
+    FF_ASSERT(options.size > 0);
+    BrepMeshing result;
+    TetgenStatus first = TetgenStatus::meshed;
+    for (const Plan& p : kPlans) {
+        if (first != TetgenStatus::meshed && !plan_helps(p, first)) continue;
+        TetgenRun run = attempt(model, features, options, p);
+        result.attempts.push_back({describe(p), run.message});
+        if (run.status == TetgenStatus::meshed) {
+            result.tets = std::move(run.mesh);
+            return result;
+        }
+        if (run.status == TetgenStatus::failed) throw Error("mesh", run.message);
+        if (first == TetgenStatus::meshed) {
+            first = run.status;
+            if (first == TetgenStatus::self_intersecting) refuse_self_intersecting_solid(model);
+        }
+    }
+    throw Error("mesh", final_message(result.attempts, first));
+}
+
+}  // namespace framefix
