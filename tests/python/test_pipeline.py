@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import framefix
-from conftest import SAMPLES
+from conftest import SAMPLES, TESTDATA
 
 CUBE, NOTCH = str(SAMPLES / "cube.step"), str(SAMPLES / "notch.step")
 COARSE = 1.6  # size factor: a few thousand tets are enough for these facts
@@ -91,3 +91,8 @@ def test_tetgen_crash_in_process_is_retried_and_the_interpreter_lives(monkeypatc
     assert [a["failure"] is None for a in r.mesh_attempts] == [False, True]
     assert "crashed" in r.mesh_attempts[0]["failure"]
     assert r.singularities.summary["curves_3_5"] == 1
+
+
+def test_self_intersecting_solid_raises_framefix_error():
+    with pytest.raises(framefix.Error, match="the solid self-intersects"):
+        framefix.analyze(str(TESTDATA / "looped_blade.step"))
