@@ -41,12 +41,19 @@ std::string face_list(const Eigen::VectorXi& faces) {
     return text;
 }
 
-// A self-intersecting triangulation of a solid that crosses itself is not ours to fix.
-void refuse_self_intersecting_solid(const BrepModel& model) {
-    const Eigen::VectorXi faces = self_intersecting_faces(model);
+// A self-intersecting triangulation of a solid that crosses itself is not ours to fix. Returns
+// whether the check ran (it is OCCT modelling code: it may crash or time out on odd parts).
+bool refuse_self_intersecting_solid(const BrepModel& model) {
+    Eigen::VectorXi faces;
+    try {
+        faces = self_intersecting_faces(model);
+    } catch (const Error&) {
+        return false;  // unknown: the finer surfaces are tried all the same
+    }
     if (faces.size() > 0)
         throw Error("mesh", "the solid self-intersects: OpenCASCADE's self-intersection check flags " + face_list(faces) +
                                 "; repair these faces in the CAD tool");
+    return true;
 }
 
 bool plan_helps(const Plan& p, TetgenStatus failure) {
@@ -59,9 +66,9 @@ TetgenRun attempt(const BrepModel& model, const FeatureSet& features, const Mesh
     return try_tetrahedralize(tessellate(model, features, surface_options), options, p.keep_boundary);
 }
 
-std::string final_message(const std::vector<MeshAttempt>& attempts, TetgenStatus first) {
+std::string final_message(const std::vector<MeshAttempt>& attempts, bool solid_sound) {
     std::string text = attempts.front().failure;
-    if (first == TetgenStatus::self_intersecting) text += ", although the solid itself does not self-intersect";
+    if (solid_sound) text += ", although the solid itself does not self-intersect";
     if (attempts.size() > 1) text += "; " + std::to_string(attempts.size()) + " ways tried, none meshed";
     return text + "; try a smaller --size, or report the part";
 }
@@ -72,9 +79,17 @@ BrepMeshing mesh_brep(const BrepModel& model, const FeatureSet& features, const 
     FF_ASSERT(options.size > 0);
     BrepMeshing result;
     TetgenStatus first = TetgenStatus::meshed;
+    bool solid_sound = false;
     for (const Plan& p : kPlans) {
         if (first != TetgenStatus::meshed && !plan_helps(p, first)) continue;
-        TetgenRun run = attempt(model, features, options, p);
+        TetgenRun run;
+        try {
+            run = attempt(model, features, options, p);
+        } catch (const Error& e) {
+            if (first == TetgenStatus::meshed) throw;  // bad options or input: no other way helps
+            result.attempts.push_back({describe(p), e.message()});  // a finer surface past the memory limit
+            break;
+        }
         result.attempts.push_back({describe(p), run.message});
         if (run.status == TetgenStatus::meshed) {
             result.tets = std::move(run.mesh);
@@ -83,10 +98,10 @@ BrepMeshing mesh_brep(const BrepModel& model, const FeatureSet& features, const 
         if (run.status == TetgenStatus::failed) throw Error("mesh", run.message);
         if (first == TetgenStatus::meshed) {
             first = run.status;
-            if (first == TetgenStatus::self_intersecting) refuse_self_intersecting_solid(model);
+            if (first == TetgenStatus::self_intersecting) solid_sound = refuse_self_intersecting_solid(model);
         }
     }
-    throw Error("mesh", final_message(result.attempts, first));
+    throw Error("mesh", final_message(result.attempts, solid_sound));
 }
 
 }  // namespace framefix

@@ -3,9 +3,9 @@
 // min dihedral) -a (volume bound from h) -z (0-based) -e (edges, for the feature tags) -Q (quiet).
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
-#include <cstdio>
 #include <set>
 #include <string>
 #include <vector>
