@@ -76,6 +76,37 @@ def two_cylinders():
     return body.fuse(boss).removeSplitter()
 
 
+def circle_edges(shape, radius, z):
+    """The circular edges of `shape` of this radius lying in the plane at height z."""
+    found = []
+    for e in shape.Edges:
+        try:
+            circle = e.Curve.__class__.__name__ == 'Circle'
+        except TypeError:  # a degenerate edge (a sphere's pole) has no curve
+            continue
+        if circle and abs(e.Curve.Radius - radius) < 1e-9 and abs(e.BoundBox.ZMin - z) < 1e-9 and abs(e.BoundBox.ZMax - z) < 1e-9:
+            found.append(e)
+    return found
+
+
+def notch_filleted():
+    """The paper's Fig. 1b: the notch with its concave floor arc filleted, r = 0.05."""
+    part = notch()
+    return part.makeFillet(0.05, circle_edges(part, 0.5, 0.5))
+
+
+def half_sphere_box_filleted():
+    """The paper's Fig. 3b: the half-sphere box with its concave circle filleted, r = 0.1."""
+    part = half_sphere_box()
+    return part.makeFillet(0.1, circle_edges(part, 0.6, 0.0))
+
+
+def groove_filleted():
+    """The paper's Fig. 5b: the groove with its two concave floor arcs filleted, r = 0.05."""
+    part = groove()
+    return part.makeFillet(0.05, circle_edges(part, 0.4, 0.8) + circle_edges(part, 0.6, 0.8))
+
+
 def cube():
     return Part.makeBox(1, 1, 1)
 
@@ -89,7 +120,8 @@ def l_prism():
     return Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, 0.5))
 
 
-SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism]
+SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism,
+           notch_filleted, half_sphere_box_filleted, groove_filleted]
 
 
 def write_bad_inputs():

@@ -47,6 +47,18 @@ def test_result_does_not_depend_on_the_mesh_size(analyze, name):
     assert (a["curves_3_5"], a["valence3"], a["valence5"]) == (b["curves_3_5"], b["valence3"], b["valence5"])
 
 
+@pytest.mark.parametrize("factor", ["0.6", "1", "1.5"])
+def test_filleted_notch_has_the_papers_valid_node_at_every_size(analyze, factor):
+    """Paper Fig. 1b: with its concave arc filleted, the notch's field is valid: one interior node
+    joins one valence-3 curve (down to the fillet) and three valence-5 curves."""
+    r = analyze("notch_filleted.step", "--size-factor", factor)
+    s = summary(r)
+    assert (s["valence3"], s["valence5"], s["curves_3_5"], s["invalid_nodes"]) == (1, 3, 0, 0)
+    assert s["meshable"]
+    interior = [n for n in r["singularities"]["nodes"] if not n["boundary"]]
+    assert [(n["n3"], n["n5"]) for n in interior] == [(1, 3)]
+
+
 @pytest.mark.parametrize("name", ["notch.step", "half_sphere_box.step", "cylinder.step"])
 def test_curves_end_at_nodes_and_node_counts_agree(analyze, name):
     g = analyze(name)["singularities"]

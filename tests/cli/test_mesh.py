@@ -39,6 +39,9 @@ FEATURES = {
     "cube.step": (12, 12, 0, 0), "l_prism.step": (18, 17, 0, 1), "notch.step": (18, 17, 0, 1),
     "cylinder.step": (2, 2, 0, 0), "groove.step": (24, 22, 0, 2), "half_sphere_box.step": (13, 12, 0, 1),
     "two_cylinders.step": (5, 3, 0, 2), "box_arc.step": (15, 14, 1, 0), "box_arc_curved.step": (16, 15, 1, 0),
+    # A fillet replaces a concave edge by a tangent face: its two new edges are smooth joins.
+    "notch_filleted.step": (19, 19, 0, 0), "half_sphere_box_filleted.step": (12, 12, 0, 0),
+    "groove_filleted.step": (26, 26, 0, 0),
 }
 
 

@@ -1,8 +1,10 @@
 #include "framefix/singularities/singularity_graph.h"
 
+#include <array>
 #include <chrono>
 
 #include "framefix/core/error.h"
+#include "framefix/singularities/chain_ends.h"
 #include "framefix/singularities/chains.h"
 #include "framefix/singularities/holonomy.h"
 #include "framefix/singularities/node_validity.h"
@@ -22,9 +24,32 @@ void check_options(const SingularityOptions& o) {
                                          "; use 0..25 degrees (matching is ambiguous at 45)");
     if (!(o.attach_distance >= 0))
         throw Error("singularities", "attach_distance must be >= 0 mean edge lengths (3)");
+    if (!(o.node_core >= 0)) throw Error("singularities", "node_core must be >= 0 mean edge lengths (1.5)");
 }
 
-SingularCurve make_curve(const ChainCurve& c, const FaceHolonomy& h, const SingularityOptions& o) {
+// How many triangles at each end of an open curve lie in the core of a junction node (within
+// node_core mean edge lengths of it): their holonomy mixes the node's curves, so they do not
+// vote on the curve's valence. At least half of the curve always votes.
+std::array<int, 2> core_triangles(const ChainCurve& c, const ChainGraph& g, const TetMesh& mesh, const TetTopology& topo,
+                                  double radius) {
+    std::array<int, 2> core{0, 0};
+    if (c.closed) return core;
+    const int n = int(c.faces.size());
+    for (int k = 0; k < 2; ++k) {
+        const ChainNode& node = g.nodes[size_t(c.ends[k])];
+        if (node.boundary || node.tets.empty()) continue;
+        for (int i = 0; i < n; ++i) {
+            const int f = c.faces[size_t(k == 0 ? i : n - 1 - i)];
+            if ((detail::face_centroid(mesh, topo, f) - node.position).norm() > radius) break;
+            ++core[size_t(k)];
+        }
+    }
+    if (2 * (core[0] + core[1]) > n) core = {0, 0};
+    return core;
+}
+
+SingularCurve make_curve(const ChainCurve& c, const FaceHolonomy& h, const SingularityOptions& o,
+                         const std::array<int, 2>& core) {
     SingularCurve out;
     out.faces = c.faces;
     out.closed = c.closed;
@@ -35,11 +60,12 @@ SingularCurve make_curve(const ChainCurve& c, const FaceHolonomy& h, const Singu
         out.valences.push_back(h.valence[f]);
         axes.push_back(h.axis.row(f).transpose());
     }
-    const LabelClass lc = classify_labels(out.valences, c.closed, o.majority_window);
+    const std::vector<int> voting(out.valences.begin() + core[0], out.valences.end() - core[1]);
+    const LabelClass lc = classify_labels(voting, c.closed, o.majority_window);
     out.kind = lc.kind;
     out.end_valence[0] = lc.end_label[0];
     out.end_valence[1] = lc.end_label[1];
-    if (lc.transition >= 0) out.transition = c.face_point[lc.transition];
+    if (lc.transition >= 0) out.transition = c.face_point[size_t(lc.transition + core[0])];
     out.stable_direction = mean_axis(axes);
     out.points = smooth_polyline(c.points, c.closed, o.smoothing_passes);
     out.length = polyline_length(out.points);
@@ -78,7 +104,9 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
     g.junk_chains = chains.junk_chains;
     g.joined = chains.joined;
     for (size_t i = 0; i < chains.curves.size(); ++i) {
-        g.curves.push_back(make_curve(chains.curves[i], h, options));
+        const ChainCurve& c = chains.curves[i];
+        const double core_radius = options.node_core * chains.h_mean;
+        g.curves.push_back(make_curve(c, h, options, core_triangles(c, chains, mesh, topo, core_radius)));
         g.curves.back().id = int(i);
     }
 

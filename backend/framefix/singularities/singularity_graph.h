@@ -78,6 +78,8 @@ struct SingularityOptions {
     // always sample; keep <= 25). Results were identical to full sampling in the tests.
     double direct_match_deg = 20;
     double attach_distance = 3;          // dead-end attachment radius, in mean edge lengths
+    double node_core = 1.5;              // triangles this close to a junction node (mean edge
+                                         // lengths) do not vote on a curve's valence
 };
 
 SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
