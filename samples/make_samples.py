@@ -76,6 +76,44 @@ def two_cylinders():
     return body.fuse(boss).removeSplitter()
 
 
+def notch_wide():
+    """A notch variant: a 2 x 1 x 0.8 box, a pocket of radius 0.7 down to z = 0.3."""
+    box = Part.makeBox(2, 1, 0.8)
+    return box.cut(Part.makeCylinder(0.7, 1, V(2, 1, 0.3), V(0, 0, 1))).removeSplitter()
+
+
+def notch_shallow():
+    """A notch variant: a unit cube, a pocket of radius 0.3 only 0.2 deep."""
+    box = Part.makeBox(1, 1, 1)
+    return box.cut(Part.makeCylinder(0.3, 1, V(1, 1, 0.8), V(0, 0, 1))).removeSplitter()
+
+
+def half_sphere_box_small():
+    """A half-sphere box variant: a dome of radius 0.4 on a 2 x 2 x 0.6 box."""
+    box = Part.makeBox(2, 2, 0.6, V(-1, -1, -0.6))
+    return box.fuse(Part.makeSphere(0.4, V(0, 0, 0), V(0, 0, 1), 0, 90)).removeSplitter()
+
+
+def half_sphere_box_large():
+    """A half-sphere box variant: a dome of radius 0.8 on a 2.4 x 2.4 x 1 box."""
+    box = Part.makeBox(2.4, 2.4, 1, V(-1.2, -1.2, -1))
+    return box.fuse(Part.makeSphere(0.8, V(0, 0, 0), V(0, 0, 1), 0, 90)).removeSplitter()
+
+
+def groove_wide():
+    """A groove variant: radii 0.3 to 0.7, 0.3 deep."""
+    box = Part.makeBox(1, 1, 1)
+    ring = Part.makeCylinder(0.7, 0.3, V(1, 1, 0.7)).cut(Part.makeCylinder(0.3, 0.3, V(1, 1, 0.7)))
+    return box.cut(ring).removeSplitter()
+
+
+def groove_narrow():
+    """A groove variant: radii 0.45 to 0.55, 0.15 deep, in a 1.2 x 1.2 x 0.8 box."""
+    box = Part.makeBox(1.2, 1.2, 0.8)
+    ring = Part.makeCylinder(0.55, 0.15, V(1.2, 1.2, 0.65)).cut(Part.makeCylinder(0.45, 0.15, V(1.2, 1.2, 0.65)))
+    return box.cut(ring).removeSplitter()
+
+
 def circle_edges(shape, radius, z):
     """The circular edges of `shape` of this radius lying in the plane at height z."""
     found = []
@@ -121,7 +159,8 @@ def l_prism():
 
 
 SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism,
-           notch_filleted, half_sphere_box_filleted, groove_filleted]
+           notch_filleted, half_sphere_box_filleted, groove_filleted,
+           notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow]
 
 
 def write_bad_inputs():

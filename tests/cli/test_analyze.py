@@ -48,6 +48,16 @@ def test_result_does_not_depend_on_the_mesh_size(analyze, name):
 
 
 @pytest.mark.parametrize("factor", ["0.6", "1", "1.5"])
+@pytest.mark.parametrize("name,count", [("notch_wide.step", 1), ("notch_shallow.step", 1),
+                                        ("half_sphere_box_small.step", 4), ("half_sphere_box_large.step", 4)])
+def test_variants_keep_the_papers_three_five_curves_at_every_size(analyze, name, count, factor):
+    """Other proportions, same topology: no constant is tuned to one shape."""
+    s = summary(analyze(name, "--size-factor", factor))
+    assert s["curves_3_5"] == count
+    assert s["invalid_nodes"] == 0
+
+
+@pytest.mark.parametrize("factor", ["0.6", "1", "1.5"])
 def test_filleted_notch_has_the_papers_valid_node_at_every_size(analyze, factor):
     """Paper Fig. 1b: with its concave arc filleted, the notch's field is valid: one interior node
     joins one valence-3 curve (down to the fillet) and three valence-5 curves."""

@@ -42,6 +42,9 @@ FEATURES = {
     # A fillet replaces a concave edge by a tangent face: its two new edges are smooth joins.
     "notch_filleted.step": (19, 19, 0, 0), "half_sphere_box_filleted.step": (12, 12, 0, 0),
     "groove_filleted.step": (26, 26, 0, 0),
+    "notch_wide.step": (18, 17, 0, 1), "notch_shallow.step": (18, 17, 0, 1),
+    "half_sphere_box_small.step": (13, 12, 0, 1), "half_sphere_box_large.step": (13, 12, 0, 1),
+    "groove_wide.step": (24, 22, 0, 2), "groove_narrow.step": (24, 22, 0, 2),
 }
 
 
