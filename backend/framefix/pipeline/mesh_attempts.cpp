@@ -60,10 +60,21 @@ bool plan_helps(const Plan& p, TetgenStatus failure) {
     return failure == TetgenStatus::self_intersecting ? p.for_intersections : p.for_recovery;
 }
 
-TetgenRun attempt(const BrepModel& model, const FeatureSet& features, const MeshOptions& options, const Plan& p) {
-    MeshOptions surface_options = options;
-    surface_options.size = options.size * p.surface_factor;
-    return try_tetrahedralize(tessellate(model, features, surface_options), options, p.keep_boundary);
+// The surface of the last try, reused by the next one at the same edge length (tries 1 and 2).
+struct SurfaceCache {
+    double factor = 0;
+    SurfaceMesh surface;
+};
+
+TetgenRun attempt(const BrepModel& model, const FeatureSet& features, const MeshOptions& options, const Plan& p,
+                  SurfaceCache& cache) {
+    if (cache.factor != p.surface_factor) {
+        MeshOptions surface_options = options;
+        surface_options.size = options.size * p.surface_factor;
+        cache.surface = tessellate(model, features, surface_options);
+        cache.factor = p.surface_factor;
+    }
+    return try_tetrahedralize(cache.surface, options, p.keep_boundary);
 }
 
 std::string final_message(const std::vector<MeshAttempt>& attempts, bool solid_sound) {
@@ -80,11 +91,12 @@ BrepMeshing mesh_brep(const BrepModel& model, const FeatureSet& features, const 
     BrepMeshing result;
     TetgenStatus first = TetgenStatus::meshed;
     bool solid_sound = false;
+    SurfaceCache cache;
     for (const Plan& p : kPlans) {
         if (first != TetgenStatus::meshed && !plan_helps(p, first)) continue;
         TetgenRun run;
         try {
-            run = attempt(model, features, options, p);
+            run = attempt(model, features, options, p, cache);
         } catch (const Error& e) {
             if (first == TetgenStatus::meshed) throw;  // bad options or input: no other way helps
             result.attempts.push_back({describe(p), e.message()});  // a finer surface past the memory limit
