@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "framefix/core/error.h"
 #include "framefix/frame_field/frame_field.h"
 #include "framefix/singularities/singularity_graph.h"
 
@@ -89,11 +90,20 @@ void bind_field(py::module_& m) {
 
     m.def(
         "extract_singularities",
-        [](const TetMesh& mesh, const FrameField& field) {
-            return extract_singularities(mesh, build_topology(mesh), field);
+        [](const TetMesh& mesh, const FrameField& field, const std::string& holonomy, int threads, bool along, bool surface_ends) {
+            SingularityOptions o;
+            o.surface_end_labels = surface_ends;
+            o.labels_along_curves = along;
+            if (holonomy == "edges") o.holonomy = Holonomy::Edges;
+            else if (holonomy != "triangles")
+                throw Error("singularities", "holonomy is '" + holonomy + "'; use 'triangles' or 'edges'");
+            o.threads = threads;
+            return extract_singularities(mesh, build_topology(mesh), field, o);
         },
-        py::arg("mesh"), py::arg("field"), py::call_guard<py::gil_scoped_release>(),
-        "Singular curves, nodes and 3-5 curves of a frame field");
+        py::arg("mesh"), py::arg("field"), py::arg("holonomy") = "triangles", py::arg("threads") = 0,
+        py::arg("labels_along_curves") = true, py::arg("surface_end_labels") = true,
+        py::call_guard<py::gil_scoped_release>(),
+        "Singular curves, nodes and 3-5 curves of a frame field; holonomy 'triangles' (default) or 'edges'");
 }
 
 }  // namespace framefix::python

@@ -31,7 +31,8 @@ struct ChainNode {
     std::vector<int> tets;            // junction tets (sorted), empty for boundary and dead-end nodes
     std::vector<int> boundary_faces;  // boundary nodes: the singular boundary triangles ending here
     std::vector<int> verts;           // boundary nodes: boundary vertices of the curve ends (sorted)
-    int n_complex = 0;                // complex triangles inside the junction
+    int n_complex = 0;                // complex triangles (edges) inside the junction
+    bool axes_normal = true;          // edge chains, boundary nodes: end edges' axes along the normal
 };
 
 struct ChainCurve {

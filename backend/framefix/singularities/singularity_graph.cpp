@@ -6,6 +6,9 @@
 #include "framefix/core/error.h"
 #include "framefix/singularities/chain_ends.h"
 #include "framefix/singularities/chains.h"
+#include "framefix/singularities/curve_labels.h"
+#include "framefix/singularities/edge_chains.h"
+#include "framefix/singularities/edge_holonomy.h"
 #include "framefix/singularities/holonomy.h"
 #include "framefix/singularities/node_validity.h"
 #include "framefix/singularities/polyline.h"
@@ -13,6 +16,46 @@
 
 namespace framefix {
 namespace {
+
+using Axes = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+// Labels of the elements curves are made of (triangles or edges) and the chains through them.
+struct Labelled {
+    std::vector<int> valence;
+    Axes axis;
+    ChainGraph chains;
+    int subsampled_edges = 0;
+};
+
+Labelled label_and_chain(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
+                         const SingularityOptions& options) {
+    ChainOptions co;
+    co.attach_distance = options.attach_distance;
+    Labelled out;
+    if (options.holonomy == Holonomy::Edges) {
+        EdgeHolonomy h = edge_holonomy(mesh, topo, field, options.threads);
+        out.chains = trace_edge_chains(mesh, topo, h.valence, h.axis, co);
+        label_edges_along_curves(mesh, topo, out.chains, h.axis, h.valence);
+        out.valence = std::move(h.valence);
+        out.axis = std::move(h.axis);
+        return out;
+    }
+    HolonomyOptions ho;
+    ho.direct_match_deg = options.direct_match_deg;
+    ho.threads = options.threads;
+    FaceHolonomy h = face_holonomy(mesh, topo, field, ho);
+    out.chains = trace_chains(mesh, topo, h.valence, co);
+    if (options.labels_along_curves) label_faces_along_curves(mesh, topo, out.chains, h.axis, h.valence);
+    out.valence = std::move(h.valence);
+    out.axis = std::move(h.axis);
+    out.subsampled_edges = h.subsampled_edges;
+    return out;
+}
+
+Eigen::Vector3d element_position(const TetMesh& mesh, const TetTopology& topo, Holonomy kind, int i) {
+    if (kind == Holonomy::Triangles) return detail::face_centroid(mesh, topo, i);
+    return (mesh.points.row(topo.edges(i, 0)) + mesh.points.row(topo.edges(i, 1))).transpose() / 2;
+}
 
 void check_options(const SingularityOptions& o) {
     if (o.majority_window < 1)
@@ -31,7 +74,7 @@ void check_options(const SingularityOptions& o) {
 // node_core mean edge lengths of it): their holonomy mixes the node's curves, so they do not
 // vote on the curve's valence. At least half of the curve always votes.
 std::array<int, 2> core_triangles(const ChainCurve& c, const ChainGraph& g, const TetMesh& mesh, const TetTopology& topo,
-                                  double radius) {
+                                  Holonomy kind, double radius) {
     std::array<int, 2> core{0, 0};
     if (c.closed) return core;
     const int n = int(c.faces.size());
@@ -40,7 +83,7 @@ std::array<int, 2> core_triangles(const ChainCurve& c, const ChainGraph& g, cons
         if (node.boundary || node.tets.empty()) continue;
         for (int i = 0; i < n; ++i) {
             const int f = c.faces[size_t(k == 0 ? i : n - 1 - i)];
-            if ((detail::face_centroid(mesh, topo, f) - node.position).norm() > radius) break;
+            if ((element_position(mesh, topo, kind, f) - node.position).norm() > radius) break;
             ++core[size_t(k)];
         }
     }
@@ -48,8 +91,22 @@ std::array<int, 2> core_triangles(const ChainCurve& c, const ChainGraph& g, cons
     return core;
 }
 
-SingularCurve make_curve(const ChainCurve& c, const FaceHolonomy& h, const SingularityOptions& o,
-                         const std::array<int, 2>& core) {
+// The label of the boundary triangle where an open curve of triangles ends, for each end (0
+// where it does not end on one): the surface singularity there fixes the curve's valence at
+// that end (docs/algorithms.md#3-5-detection).
+std::array<int, 2> surface_end_labels(const ChainCurve& c, const Labelled& h, const TetTopology& topo,
+                                      const SingularityOptions& o) {
+    std::array<int, 2> out{0, 0};
+    if (c.closed || o.holonomy != Holonomy::Triangles || !o.surface_end_labels) return out;
+    for (int k = 0; k < 2; ++k) {
+        const int f = k == 0 ? c.faces.front() : c.faces.back();
+        if (topo.face_tets(f, 0) < 0 || topo.face_tets(f, 1) < 0) out[size_t(k)] = h.valence[size_t(f)];
+    }
+    return out;
+}
+
+SingularCurve make_curve(const ChainCurve& c, const Labelled& h, const SingularityOptions& o,
+                         const std::array<int, 2>& core, const std::array<int, 2>& forced) {
     SingularCurve out;
     out.faces = c.faces;
     out.closed = c.closed;
@@ -61,7 +118,7 @@ SingularCurve make_curve(const ChainCurve& c, const FaceHolonomy& h, const Singu
         axes.push_back(h.axis.row(f).transpose());
     }
     const std::vector<int> voting(out.valences.begin() + core[0], out.valences.end() - core[1]);
-    const LabelClass lc = classify_labels(voting, c.closed, o.majority_window);
+    const LabelClass lc = classify_labels(voting, c.closed, o.majority_window, forced.data());
     out.kind = lc.kind;
     out.end_valence[0] = lc.end_label[0];
     out.end_valence[1] = lc.end_label[1];
@@ -88,13 +145,8 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
                                        const SingularityOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     check_options(options);
-    HolonomyOptions ho;
-    ho.direct_match_deg = options.direct_match_deg;
-    ho.threads = options.threads;
-    FaceHolonomy h = face_holonomy(mesh, topo, field, ho);
-    ChainOptions co;
-    co.attach_distance = options.attach_distance;
-    const ChainGraph chains = trace_chains(mesh, topo, h.valence, co);
+    Labelled h = label_and_chain(mesh, topo, field, options);
+    const ChainGraph& chains = h.chains;
 
     SingularityGraph g;
     g.h_mean = chains.h_mean;
@@ -106,7 +158,8 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
     for (size_t i = 0; i < chains.curves.size(); ++i) {
         const ChainCurve& c = chains.curves[i];
         const double core_radius = options.node_core * chains.h_mean;
-        g.curves.push_back(make_curve(c, h, options, core_triangles(c, chains, mesh, topo, core_radius)));
+        g.curves.push_back(make_curve(c, h, options, core_triangles(c, chains, mesh, topo, options.holonomy, core_radius),
+                                      surface_end_labels(c, h, topo, options)));
         g.curves.back().id = int(i);
     }
 
@@ -134,8 +187,9 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
         }
         bool on_feature = false;
         for (int v : cn.verts) on_feature |= feature[v] != 0;
-        n.valid = on_feature || (is_valid_smooth_boundary_node(n.n3, n.n5) &&
-                                 axes_along_normals(mesh, topo, h.axis, cn.boundary_faces));
+        const bool axes_ok = options.holonomy == Holonomy::Edges ? cn.axes_normal
+                                                                  : axes_along_normals(mesh, topo, h.axis, cn.boundary_faces);
+        n.valid = on_feature || (is_valid_smooth_boundary_node(n.n3, n.n5) && axes_ok);
     }
 
     SingularitySummary& s = g.summary;

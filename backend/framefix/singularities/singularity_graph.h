@@ -70,7 +70,17 @@ struct SingularityGraph {
     int joined = 0;                      // pass-through nodes (two curve ends) removed by joining
 };
 
+// Where singular curves are read (docs/algorithms.md#per-edge-holonomy): around triangles with
+// per-vertex frames (curves are chains of triangles), or around mesh edges with per-tet frames
+// (curves are chains of edges; face_valence and SingularCurve::faces then index topology edges).
+enum class Holonomy : int { Triangles = 0, Edges = 1 };
+
 struct SingularityOptions {
+    Holonomy holonomy = Holonomy::Triangles;
+    // Triangles: an open curve ending on a boundary triangle takes that triangle's label as its
+    // valence at that end (the surface singularity there fixes it).
+    bool surface_end_labels = true;
+    bool labels_along_curves = true;     // triangles: read labels along the curve (curve_labels.h); edges always do
     int smoothing_passes = 5;            // Laplacian passes on the display polylines
     int majority_window = 5;             // label smoothing window along a chain
     int threads = 0;                     // 0 = all

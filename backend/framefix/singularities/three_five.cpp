@@ -35,7 +35,7 @@ std::vector<int> smooth_labels(const std::vector<int>& labels, int window, bool 
     return out;
 }
 
-LabelClass classify_labels(const std::vector<int>& labels, bool closed, int window) {
+LabelClass classify_labels(const std::vector<int>& labels, bool closed, int window, const int forced_end[2]) {
     FF_ASSERT(!labels.empty());
     const int n = int(labels.size());
     const std::vector<int> s = smooth_labels(labels, window, closed);
@@ -48,6 +48,8 @@ LabelClass classify_labels(const std::vector<int>& labels, bool closed, int wind
     const int k = std::max(1, std::min(3, n / 3));
     out.end_label[0] = majority(s, 0, k, s.front());
     out.end_label[1] = majority(s, n - k, n, s.back());
+    for (int e = 0; e < 2 && forced_end; ++e)
+        if (forced_end[e] == 3 || forced_end[e] == 5) out.end_label[e] = forced_end[e];
     if (out.end_label[0] == out.end_label[1]) {
         out.kind = kind_of(out.end_label[0]);
         return out;

@@ -22,6 +22,7 @@ struct LabelClass {
     int transition = -1;        // 3-5 curves: index of the first label of the end-1 part
 };
 
-LabelClass classify_labels(const std::vector<int>& labels, bool closed, int window);
+// forced_end: a known label (3 or 5) for an end of an open curve, 0 = read it from the labels.
+LabelClass classify_labels(const std::vector<int>& labels, bool closed, int window, const int forced_end[2] = nullptr);
 
 }  // namespace framefix
