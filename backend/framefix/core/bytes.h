@@ -24,6 +24,10 @@ public:
         value<Eigen::Index>(m.cols());
         bytes_.append(reinterpret_cast<const char*>(m.data()), size_t(m.size()) * sizeof(typename Derived::Scalar));
     }
+    void text(const std::string& s) {
+        value<size_t>(s.size());
+        bytes_.append(s);
+    }
     std::string take() { return std::move(bytes_); }
 
 private:
@@ -45,6 +49,10 @@ public:
         m.resize(rows, cols);
         const size_t n = size_t(m.size()) * sizeof(typename Derived::Scalar);
         if (n) std::memcpy(m.data(), take(n), n);
+    }
+    std::string text() {
+        const auto n = value<size_t>();
+        return std::string(take(n), n);
     }
     bool done() const { return at_ == bytes_.size(); }
 

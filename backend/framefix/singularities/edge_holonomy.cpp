@@ -5,6 +5,7 @@
 #include <omp.h>
 
 #include "framefix/frame_field/projection.h"
+#include "framefix/singularities/chain_ends.h"
 #include "framefix/singularities/cube_group.h"
 #include "framefix/singularities/holonomy.h"
 
@@ -40,12 +41,6 @@ bool has_vertex(const TetMesh& mesh, int t, int v) {
     return false;
 }
 
-Eigen::Vector3d centroid(const TetMesh& mesh, int t) {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 4; ++k) c += mesh.points.row(mesh.tets(t, k)).transpose();
-    return c / 4;
-}
-
 int ring_valence(const TetMesh& mesh, const TetTopology& topo, const std::vector<Eigen::Matrix3d>& R, int e,
                  const std::vector<int>& ring, Eigen::Vector3d* axis) {
     std::vector<Eigen::Matrix3d> frames;
@@ -56,7 +51,7 @@ int ring_valence(const TetMesh& mesh, const TetTopology& topo, const std::vector
     const Eigen::Vector3d d = mesh.points.row(topo.edges(e, 1)).transpose() - xa;
     double turn = 0;  // > 0 when the ring turns right-handed about d
     for (size_t i = 0; i < ring.size(); ++i)
-        turn += (centroid(mesh, ring[i]) - xa).cross(centroid(mesh, ring[(i + 1) % ring.size()]) - xa).dot(d);
+        turn += (detail::tet_centroid(mesh, ring[i]) - xa).cross(detail::tet_centroid(mesh, ring[(i + 1) % ring.size()]) - xa).dot(d);
     // Reversing the ring inverts g and flips its axis: this is the axis for the ring right-handed about d.
     *axis = (turn > 0 ? 1.0 : -1.0) * (R[size_t(ring[0])] * cube::axis(g));
     if (cube::trace(g) != 1) return -1;  // 120 or 180 deg: node material

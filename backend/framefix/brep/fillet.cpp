@@ -1,0 +1,213 @@
+#include "framefix/brep/fillet.h"
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+
+#include "framefix/brep/occt_error.h"
+#include "framefix/brep/shape.h"
+#include "framefix/core/bytes.h"
+#include "framefix/core/isolation.h"
+
+namespace framefix {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Step {
+    TopoDS_Shape shape;
+    std::string failure;  // empty when the fillets were made and the result checked
+};
+
+double volume_of(const TopoDS_Shape& s) {
+    GProp_GProps props;
+    BRepGProp::VolumeProperties(s, props);
+    return props.Mass();
+}
+
+double length_of(const TopoDS_Shape& edge) {
+    GProp_GProps props;
+    BRepGProp::LinearProperties(edge, props);
+    return props.Mass();
+}
+
+int solids_in(const TopoDS_Shape& s) {
+    int n = 0;
+    for (TopExp_Explorer it(s, TopAbs_SOLID); it.More(); it.Next()) ++n;
+    return n;
+}
+
+// What a fillet of these edges should change the volume by.
+double expected_change(const std::vector<TopoDS_Shape>& edges, const std::vector<FilletRequest>& req,
+                       const std::vector<double>& radius) {
+    double v = 0;
+    for (size_t i = 0; i < edges.size(); ++i) v += fillet_section_area(radius[i], req[i].theta_deg) * length_of(edges[i]);
+    return v;
+}
+
+// One BRepFilletAPI_MakeFillet over `edges` with `radius`, checked: valid, one solid, volume
+// change within volume_factor of the expectation. `made` receives the builder for the history.
+Step fillet_once(const TopoDS_Shape& solid, const std::vector<TopoDS_Shape>& edges, const std::vector<FilletRequest>& req,
+                 const std::vector<double>& radius, const FilletOptions& o, std::unique_ptr<BRepFilletAPI_MakeFillet>& mk) {
+    Step step;
+    try {
+        mk = std::make_unique<BRepFilletAPI_MakeFillet>(solid);
+        for (size_t i = 0; i < edges.size(); ++i) mk->Add(radius[i], TopoDS::Edge(edges[i]));
+        mk->Build();
+        if (!mk->IsDone()) return {{}, "OCCT could not build the fillet surface (BRepFilletAPI_MakeFillet failed)"};
+        step.shape = mk->Shape();
+    } catch (const Standard_Failure& f) {
+        return {{}, "OCCT raised " + occt_message(f) + " while filleting"};
+    }
+    if (!BRepCheck_Analyzer(step.shape).IsValid()) return {{}, "the filleted solid is not valid (BRepCheck_Analyzer)"};
+    if (solids_in(step.shape) != 1)
+        return {{}, "the fillet gave " + std::to_string(solids_in(step.shape)) + " solids instead of one"};
+    const double dv = volume_of(step.shape) - volume_of(solid), want = expected_change(edges, req, radius);
+    const bool fits = dv * want > 0 && std::abs(dv) <= o.volume_factor * std::abs(want) &&
+                      std::abs(dv) * o.volume_factor >= std::abs(want);
+    if (!fits) {
+        std::ostringstream m;
+        m << "the volume changed by " << dv << " where the fillet should change it by about " << want;
+        return {{}, m.str()};
+    }
+    return step;
+}
+
+struct Plan {
+    TopoDS_Shape shape;
+    std::vector<FilletOutcome> out;
+    std::string how;
+};
+
+std::vector<double> scaled(const std::vector<FilletRequest>& req, double s) {
+    std::vector<double> r;
+    for (const FilletRequest& q : req) r.push_back(q.radius * s);
+    return r;
+}
+
+// Follows the edges still to fillet through one fillet's history.
+void follow(BRepFilletAPI_MakeFillet& mk, size_t from, std::vector<TopoDS_Shape>& edges, std::vector<char>& lost) {
+    for (size_t j = from; j < edges.size(); ++j) {
+        if (lost[j]) continue;
+        if (mk.IsDeleted(edges[j])) lost[j] = 1;
+        else if (!mk.Modified(edges[j]).IsEmpty()) edges[j] = mk.Modified(edges[j]).First();
+    }
+}
+
+Plan plan_fillets(const BrepModel::Shape& shape, const std::vector<FilletRequest>& req, const FilletOptions& o) {
+    Plan p;
+    std::vector<TopoDS_Shape> edges;
+    for (const FilletRequest& q : req) {
+        edges.push_back(shape.edges(q.edge));
+        p.out.push_back({q.edge, q.radius, false, ""});
+    }
+    std::string failure;
+    for (double s : {1.0, o.retry_scale}) {
+        std::unique_ptr<BRepFilletAPI_MakeFillet> mk;
+        const Step step = fillet_once(shape.solid, edges, req, scaled(req, s), o, mk);
+        if (!step.failure.empty()) continue;
+        p.shape = step.shape;
+        for (size_t i = 0; i < req.size(); ++i) p.out[i].radius = req[i].radius * s, p.out[i].done = true;
+        p.how = s == 1.0 ? "all at once" : "all at once, radii scaled by " + std::to_string(o.retry_scale);
+        return p;
+    }
+    p.how = "edge by edge";
+    p.shape = shape.solid;
+    std::vector<char> lost(req.size(), 0);
+    for (size_t i = 0; i < req.size(); ++i) {
+        if (lost[i]) {
+            p.out[i].reason = "an earlier fillet consumed the edge";
+            continue;
+        }
+        for (double s : {1.0, o.retry_scale}) {
+            std::unique_ptr<BRepFilletAPI_MakeFillet> mk;
+            const Step step = fillet_once(p.shape, {edges[i]}, {req[i]}, {req[i].radius * s}, o, mk);
+            if (!step.failure.empty()) {
+                std::ostringstream m;
+                m << step.failure << " at radius " << req[i].radius << " and " << req[i].radius * o.retry_scale
+                  << " (larger than the faces next to the edge allow?)";
+                p.out[i].reason = m.str();
+                continue;
+            }
+            p.shape = step.shape;
+            p.out[i] = {req[i].edge, req[i].radius * s, true, ""};
+            follow(*mk, i + 1, edges, lost);
+            break;
+        }
+    }
+    return p;
+}
+
+void check_requests(const BrepModel& model, const std::vector<FilletRequest>& req) {
+    for (const FilletRequest& q : req) {
+        if (q.edge < 1 || q.edge > model.num_edges)
+            throw Error("correct", "no Edge" + std::to_string(q.edge) + " to fillet: the solid has " +
+                                       std::to_string(model.num_edges) + " edges");
+        if (!(q.radius > 0))
+            throw Error("correct", "fillet radius " + std::to_string(q.radius) + " on Edge" + std::to_string(q.edge) +
+                                       "; give a radius > 0");
+    }
+}
+
+}  // namespace
+
+double fillet_section_area(double radius, double theta_deg) {
+    // The two faces meet at angle beta = |180 - theta| away from flat; between them and the
+    // tangent circle lies r^2 (cot(gamma / 2) - (pi - gamma) / 2), gamma = 180 - beta the
+    // opening angle of the wedge the circle sits in.
+    const double gamma = kPi - std::abs(kPi - theta_deg * kPi / 180);
+    const double area = radius * radius * (1 / std::tan(gamma / 2) - (kPi - gamma) / 2);
+    return theta_deg > 180 ? area : -area;
+}
+
+FilletResult fillet_edges(const BrepModel& model, const std::vector<FilletRequest>& requests, const FilletOptions& options) {
+    FF_ASSERT(model.shape);
+    check_requests(model, requests);
+    FilletResult result;
+    if (requests.empty()) {
+        result.model = model;
+        result.how = "nothing to fillet";
+        return result;
+    }
+    const IsolatedTask task{"correct", "OpenCASCADE's fillet builder", "fillet the edges in the CAD tool", options.timeout_s};
+    const std::string bytes = run_isolated(task, [&] {
+        const Plan p = plan_fillets(*model.shape, requests, options);
+        ByteWriter w;
+        w.text(p.how);
+        for (const FilletOutcome& f : p.out) {
+            w.value(f.radius);
+            w.value<char>(f.done);
+            w.text(f.reason);
+        }
+        std::ostringstream brep;
+        BRepTools::Write(p.shape, brep);
+        w.text(brep.str());
+        return w.take();
+    });
+    ByteReader r(bytes);
+    result.how = r.text();
+    for (const FilletRequest& q : requests) {
+        FilletOutcome f{q.edge, r.value<double>(), r.value<char>() != 0, ""};
+        f.reason = r.text();
+        result.fillets.push_back(f);
+    }
+    std::istringstream in(r.text());
+    TopoDS_Shape shape;
+    BRep_Builder builder;
+    occt_call("correct", "reading the filleted solid", [&] { BRepTools::Read(shape, in, builder); });
+    result.model = make_model(shape, "the filleted solid", "", "brep");
+    result.volume_change = result.model.volume - model.volume;
+    return result;
+}
+
+}  // namespace framefix
