@@ -28,6 +28,8 @@ struct BrepModel {
 BrepModel load_shape(const std::string& path);               // .step/.stp/.brep/.iges/.igs
 BrepModel load_brep_string(const std::string& brep_text);    // FreeCAD's exportBrepToString()
 std::string to_brep_string(const BrepModel& model);
+// Writes the solid to `path` (.brep or .step); framefix::Error("output") on failure.
+void write_shape(const BrepModel& model, const std::string& path);
 
 struct FeatureOptions {
     int samples_per_edge = 9;       // points along each edge where the dihedral angle is measured

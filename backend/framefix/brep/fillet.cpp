@@ -4,14 +4,19 @@
 #include <memory>
 #include <sstream>
 
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepCheck_Analyzer.hxx>
+#include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopoDS.hxx>
 
 #include "framefix/brep/occt_error.h"
@@ -159,7 +164,35 @@ void check_requests(const BrepModel& model, const std::vector<FilletRequest>& re
     }
 }
 
+double distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
+    BRepExtrema_DistShapeShape d(a, b);
+    return d.IsDone() && d.NbSolution() > 0 ? d.Value() : 1e300;
+}
+
 }  // namespace
+
+double fillet_room(const BrepModel& model, int edge) {
+    FF_ASSERT(model.shape && edge >= 1 && edge <= model.num_edges);
+    const BrepModel::Shape& s = *model.shape;
+    return occt_call("correct", "measuring the room for a fillet on Edge" + std::to_string(edge), [&] {
+        const TopoDS_Edge e = TopoDS::Edge(s.edges(edge));
+        const BRepAdaptor_Curve curve(e);
+        const TopoDS_Shape mid = BRepBuilderAPI_MakeVertex(curve.Value((curve.FirstParameter() + curve.LastParameter()) / 2));
+        TopTools_IndexedDataMapOfShapeListOfShape faces_of;
+        TopExp::MapShapesAndAncestors(s.solid, TopAbs_EDGE, TopAbs_FACE, faces_of);
+        const TopTools_ListOfShape& next = faces_of.FindFromKey(e);
+        double room = 1e300;
+        for (int f = 1; f <= s.faces.Extent(); ++f) {
+            bool holds = false;
+            for (const TopoDS_Shape& g : next) holds |= g.IsSame(s.faces(f));
+            if (!holds) room = std::min(room, distance(mid, s.faces(f)));
+        }
+        for (const TopoDS_Shape& face : next)
+            for (TopExp_Explorer it(face, TopAbs_EDGE); it.More(); it.Next())
+                if (!it.Current().IsSame(e)) room = std::min(room, distance(mid, it.Current()));
+        return room;
+    });
+}
 
 double fillet_section_area(double radius, double theta_deg) {
     // The two faces meet at angle beta = |180 - theta| away from flat; between them and the

@@ -43,6 +43,11 @@ struct FilletResult {
 FilletResult fillet_edges(const BrepModel& model, const std::vector<FilletRequest>& requests,
                           const FilletOptions& options = {});
 
+// Room for a fillet along `edge` (1-based): the distance from the edge's midpoint to the nearest
+// other edge of the faces next to it, or to the nearest face that does not hold the edge (the
+// local thickness), whichever is smaller; model units.
+double fillet_room(const BrepModel& model, int edge);
+
 // Cross-section area a fillet of radius r adds to an edge whose dihedral angle inside the solid is
 // theta (theta > 180 deg: concave, material added) or removes (theta < 180 deg), model units^2.
 double fillet_section_area(double radius, double theta_deg);

@@ -31,6 +31,7 @@
 #include <TopoDS_Solid.hxx>
 
 #include "framefix/brep/occt_error.h"
+#include "framefix/brep/quiet_occt.h"
 #include "framefix/core/isolation.h"
 #include "framefix/brep/shape.h"
 
@@ -193,20 +194,6 @@ double load_timeout_s(double bytes) {
     return kLoadBaseSeconds + kLoadSecondsPerMB * bytes / 1e6;
 }
 
-// OCCT's readers print diagnostics on stdout, which belongs to the CLI's summary. The printers
-// are taken off for one read and put back after, so a host (FreeCAD) keeps its own.
-class QuietOcct {
-public:
-    QuietOcct() : saved_(Message::DefaultMessenger()->Printers()) {
-        Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
-    }
-    ~QuietOcct() { Message::DefaultMessenger()->ChangePrinters() = saved_; }
-    QuietOcct(const QuietOcct&) = delete;
-    QuietOcct& operator=(const QuietOcct&) = delete;
-
-private:
-    Message_SequenceOfPrinters saved_;
-};
 
 // Reads and checks `read()` in a worker process first (isolation.h): a crash or a hang of OCCT on
 // a damaged file becomes an Error there. Only then the same read runs here, on the same memory

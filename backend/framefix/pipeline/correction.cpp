@@ -12,14 +12,15 @@ constexpr double kRotationThresholdDeg = 10;  // "frames turned" in the report c
 
 }  // namespace
 
-Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options) {
+Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
+                   const BrepModel* model) {
     const CorrectionMethod& method = find_correction_method(options.correction);
     const auto t0 = std::chrono::steady_clock::now();
     Correction c;
     c.method = method.name;
     c.before = graph.summary;
     report(options.progress, "correct", 0.0);
-    CorrectionContext context{options, mesh, field, graph, c};
+    CorrectionContext context{options, model, mesh, field, graph, c};
     c.changed = method.apply(context);
     c.graph_before = graph;
     c.field_before = field.frames;
@@ -30,7 +31,8 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
         field = solve_field(mesh, std::move(field.constraints), options, sink ? inner : ProgressSink{});
         report(options.progress, "correct", 0.9);
         graph = find_singularities(mesh, field, options);
-        c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
+        if (!c.remeshed)  // frames of another mesh cannot be compared vertex by vertex
+            c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
     }
     report(options.progress, "correct", 1.0);
     c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -1,6 +1,10 @@
 #include "framefix/pipeline/correction_methods.h"
 
+#include <algorithm>
+
 #include "framefix/core/error.h"
+#include "framefix/pipeline/fillet_plan.h"
+#include "framefix/pipeline/mesh_attempts.h"
 
 namespace framefix {
 namespace {
@@ -12,6 +16,34 @@ bool apply_snap(CorrectionContext& c) {
                                            c.field.frames, c.graph, c.options.snap);
     if (c.record.snap.snapped_curve_ids.empty()) return false;
     c.field.constraints = c.record.snap.constraints;
+    return true;
+}
+
+// Fillet insertion on the B-rep (paper section 4.3): the concave edges next to each 3-5 curve are
+// filleted by OCCT, and the filleted solid is meshed again at the same size.
+bool apply_fillet(CorrectionContext& c) {
+    if (!c.model)
+        throw Error("correct", "method 'fillet' changes the B-rep and this input is a tet mesh; give the CAD part "
+                               "(.step, .brep, .iges) or use --method snap");
+    const FilletPlan plan = plan_fillets(*c.model, c.mesh.features, c.graph, c.graph.h_mean);
+    c.record.notes = plan.notes;
+    if (plan.requests.empty()) return false;
+    FilletResult f = fillet_edges(*c.model, plan.requests);
+    c.record.fillets = f.fillets;
+    c.record.fillet_how = f.how;
+    if (std::none_of(f.fillets.begin(), f.fillets.end(), [](const FilletOutcome& o) { return o.done; })) return false;
+    c.record.filleted = std::make_shared<const BrepModel>(std::move(f.model));
+    MeshStage m;
+    m.features = classify_features(*c.record.filleted, c.options.features);
+    MeshOptions mo = c.options.mesh;
+    mo.size = c.mesh.tets.size;
+    BrepMeshing meshing = mesh_brep(*c.record.filleted, m.features, mo);
+    m.tets = std::move(meshing.tets);
+    m.attempts = std::move(meshing.attempts);
+    m.topology = build_topology(m.tets);
+    c.mesh = std::move(m);
+    c.field.constraints = boundary_constraints(c.mesh.tets, c.mesh.features);
+    c.record.remeshed = true;
     return true;
 }
 
@@ -27,7 +59,7 @@ std::string names() {
 const std::vector<CorrectionMethod>& correction_methods() {
     static const std::vector<CorrectionMethod> methods = {
         {"snap", "snap 3-5 curves onto the boundary (the paper's recommendation)", true, &apply_snap},
-        {"fillet", "insert fillets on the B-rep along the concave feature curves that cause 3-5 curves", false, nullptr},
+        {"fillet", "insert fillets on the B-rep along the concave feature curves that cause 3-5 curves", true, &apply_fillet},
         {"extrude-curves", "extrude the concave feature curves into the volume along the field's stable direction", false, nullptr},
         {"extrude-nodes", "extrude the boundary singular nodes into the volume along streamlines of the field", false, nullptr},
     };

@@ -12,6 +12,7 @@ namespace framefix {
 
 struct CorrectionContext {
     const RunOptions& options;
+    const BrepModel* model;          // the B-rep the mesh came from; null for a tet-mesh input
     MeshStage& mesh;                 // a method that remeshes replaces it
     FieldStage& field;               // constraints to change; frames: the field being corrected
     const SingularityGraph& graph;   // the graph being corrected

@@ -160,6 +160,11 @@ std::vector<std::string> write_outputs(const RunResult& r, const std::string& di
         write_vtk(paths_grid(correction->snap), path("snapped_curves.vtk"), "FrameFix snapped curves (boundary paths)");
         written.push_back(path("singular_curves_before.vtk"));
         written.push_back(path("snapped_curves.vtk"));
+        if (correction->filleted)
+            for (const char* name : {"filleted.brep", "filleted.step"}) {
+                write_shape(*correction->filleted, path(name));
+                written.push_back(path(name));
+            }
     }
     if (const auto& blocks = r.blocks) {
         write_vtk(blocks_grid(r.mesh->tets, *blocks), path("blocks.vtk"), "FrameFix blocks (tets labelled by block)");

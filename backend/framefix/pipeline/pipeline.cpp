@@ -142,7 +142,7 @@ RunResult run(const RunInput& input, const RunOptions& o) {
     });
     if (done(Stage::singularities)) return r;
     if (o.correction != kNoCorrection)
-        timed(t.correct, t, [&] { r.correction = detail::correct(*r.mesh, *r.field, *r.singularities, o); });
+        timed(t.correct, t, [&] { r.correction = detail::correct(*r.mesh, *r.field, *r.singularities, o, r.model.get()); });
     if (done(Stage::correction)) return r;
     timed(t.blocks, t, [&] { r.blocks = blocks(r, o); });
     done(Stage::blocks);

@@ -75,7 +75,16 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
         paths.push_back({{"source_curve", p.source_curve}, {"forced", p.forced},
                          {"crosses_features", p.crosses_features}, {"points", pts}});
     }
+    json fillets = json::array();
+    for (const FilletOutcome& f : c.fillets) {
+        json one = {{"edge", f.edge}, {"radius", f.radius}, {"done", f.done}};
+        if (!f.done) one["reason"] = f.reason;
+        fillets.push_back(one);
+    }
     return {{"method", c.method},
+            {"fillets", fillets},
+            {"notes", c.notes},
+            {"remeshed", c.remeshed},
             {"before", summary_json(c.before)},
             {"after", summary_json(after)},
             {"changed_curves", c.snap.snapped_curve_ids.size()},

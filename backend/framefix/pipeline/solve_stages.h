@@ -14,6 +14,9 @@ SingularityGraph find_singularities(const MeshStage& mesh, const FieldStage& fie
 
 // The correction stage: applies `options.correction` and, when it changed the set-up,
 // re-solves `field` and re-extracts `graph` in place.
-Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options);
+// model: the B-rep the mesh was made from, null for a tet-mesh input (methods that change the
+// B-rep refuse those).
+Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
+                   const BrepModel* model);
 
 }  // namespace framefix::detail

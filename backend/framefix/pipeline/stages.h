@@ -2,6 +2,10 @@
 // The stages of a run, in the order they run, and what each one produces.
 #include <string>
 
+#include <memory>
+#include <vector>
+
+#include "framefix/brep/fillet.h"
 #include "framefix/corrections/snapping.h"
 #include "framefix/frame_field/frame_field.h"
 #include "framefix/mesh/features.h"
@@ -38,6 +42,13 @@ struct Correction {
     SingularityGraph graph_before;
     FrameField field_before;
     SnapResult snap;                // filled by method "snap"
+    // Filled by method "fillet": one outcome per edge it tried, what it could not do, how OCCT
+    // made the fillets, and the filleted solid (the run's mesh, field and graph are then its own).
+    std::vector<FilletOutcome> fillets;
+    std::vector<std::string> notes;
+    std::string fillet_how;
+    std::shared_ptr<const BrepModel> filleted;
+    bool remeshed = false;          // the mesh was replaced (field_before lives on the old one)
     bool changed = false;           // the method changed the set-up; field and graph were re-solved
     double rotated_fraction = 0;    // vertices whose frame turned by more than 10 degrees
     double seconds = 0;             // method + re-solve + re-extraction

@@ -35,7 +35,15 @@ std::string human_summary(const RunResult& r) {
     if (correction) {
         const auto& b = correction->before;
         s += "; before " + correction->method + ": " + std::to_string(b.curves_3_5) + " 3-5 curve" +
-             (b.curves_3_5 == 1 ? "" : "s") + ", " + std::to_string(correction->snap.snapped_curve_ids.size()) + " snapped";
+             (b.curves_3_5 == 1 ? "" : "s") + ", ";
+        if (correction->method == "fillet") {
+            int done = 0;
+            for (const FilletOutcome& f : correction->fillets) done += f.done;
+            s += std::to_string(done) + " of " + std::to_string(correction->fillets.size()) + " edge" +
+                 (correction->fillets.size() == 1 ? "" : "s") + " filleted";
+        } else {
+            s += std::to_string(correction->snap.snapped_curve_ids.size()) + " snapped";
+        }
     }
     if (blocks) {
         s += "; " + std::to_string(blocks->count) + " block" + (blocks->count == 1 ? "" : "s") + ", " +

@@ -71,3 +71,19 @@ TEST(Fillet, BadRequestsAreRefused) {
 
 }  // namespace
 }  // namespace framefix
+
+namespace framefix {
+namespace {
+
+TEST(Fillet, RoomIsTheDistanceToTheNearestOtherEdgeOrFace) {
+    // The notch's floor arc (radius 0.5 about x = y = 1, at z = 0.5): its midpoint lies
+    // 0.5 sin 45 deg = 0.354 from the box's side faces x = 1 and y = 1.
+    const BrepModel notch = load_shape(test::sample("notch"));
+    for (const EdgeFeature& e : classify_features(notch).edges)
+        if (e.valence == 3) EXPECT_NEAR(fillet_room(notch, e.edge), 0.5 * std::sqrt(0.5), 1e-3);
+    // A unit cube's edge: the edges meeting it, and the faces at its ends, lie 0.5 from its midpoint.
+    EXPECT_NEAR(fillet_room(test::box(1, 1, 1), 1), 0.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace framefix
