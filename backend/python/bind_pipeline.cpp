@@ -47,7 +47,24 @@ void bind_correction(py::module_& m) {
             std::vector<Points> out;
             for (const auto& p : c.snap.paths) out.push_back(p.points);
             return out;
-        });
+        })
+        .def_property_readonly("fillets", [](const Correction& c) {
+            py::list out;
+            for (const FilletOutcome& f : c.fillets) {
+                py::dict d;
+                d["edge"] = f.edge;
+                d["radius"] = f.radius;
+                d["done"] = f.done;
+                d["reason"] = f.reason;
+                out.append(d);
+            }
+            return out;
+        }, "method fillet: one dict per edge tried (edge, radius, done, reason)")
+        .def_readonly("notes", &Correction::notes, "method fillet: 3-5 curves it cannot remove, radii cut by the room")
+        .def_readonly("remeshed", &Correction::remeshed, "the run's mesh is the filleted solid's")
+        .def_property_readonly("filleted_brep", [](const Correction& c) {
+            return c.filleted ? py::object(py::str(to_brep_string(*c.filleted))) : py::object(py::none());
+        }, "method fillet: the filleted solid as BREP text (Part.Shape().importBrepFromString), else None");
 }
 
 void bind_blocks(py::module_& m) {

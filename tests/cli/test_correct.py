@@ -32,7 +32,7 @@ def test_part_without_three_five_curve_is_unchanged(analyze):
     assert c["rotated_fraction_10deg"] == 0
 
 
-@pytest.mark.parametrize("method", ["fillet", "extrude-curves", "extrude-nodes"])
+@pytest.mark.parametrize("method", ["extrude-curves", "extrude-nodes"])
 def test_methods_not_yet_available_are_refused_at_once(method, tmp_path):
     code, out, err = run("correct", SAMPLES / "notch.step", "--method", method, "--out", tmp_path, timeout=30)
     assert code == 2

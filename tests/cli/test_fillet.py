@@ -1,0 +1,86 @@
+"""framefix correct --method fillet (paper section 4.3): the concave edges behind the 3-5 curves are
+filleted on the B-rep, and the filleted part's graph is the paper's (Figs. 1b, 3b, 5b), at the
+default size and at 0.7 x."""
+import json
+import subprocess
+
+import pytest
+
+from conftest import SAMPLES, run
+
+SIZES = [[], ["--size-factor", "0.7"]]
+
+
+def fillet(tmp_path, name, *flags):
+    out = tmp_path / "out"
+    code, _, err = run("correct", SAMPLES / name, "--method", "fillet", "--out", out, "--quiet", *flags, timeout=600)
+    assert code == 0, err
+    return json.loads((out / "report.json").read_text()), out
+
+
+def interior(r):
+    return [(n["n3"], n["n5"], n["valid"]) for n in r["singularities"]["nodes"] if not n["boundary"]]
+
+
+def check_filleted(r, out):
+    c = r["correction"]
+    assert c["method"] == "fillet" and c["remeshed"]
+    assert c["before"]["curves_3_5"] >= 1
+    assert c["fillets"] and all(f["done"] and f["radius"] > 0 for f in c["fillets"])
+    assert r["singularities"]["summary"] == c["after"]
+    assert c["after"]["meshable"] and c["after"]["curves_3_5"] == 0 and c["after"]["invalid_nodes"] == 0
+    assert (out / "filleted.brep").stat().st_size > 0
+    assert (out / "filleted.step").read_text().startswith("ISO-10303-21")
+
+
+@pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
+def test_notch_gets_the_papers_valid_node(tmp_path, flags):
+    r, out = fillet(tmp_path, "notch.step", *flags)
+    check_filleted(r, out)
+    assert [f["edge"] for f in r["correction"]["fillets"]] == [18]  # the concave floor arc
+    assert interior(r) == [(1, 3, True)]  # one valence-3 curve down to the fillet, three valence-5
+
+
+@pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
+def test_half_sphere_box_gets_four_extra_valence5_curves(tmp_path, flags):
+    r, out = fillet(tmp_path, "half_sphere_box.step", *flags)
+    check_filleted(r, out)
+    before = r["correction"]["curves_before"]
+    assert r["correction"]["after"]["valence5"] >= sum(c["kind"] == "valence5" for c in before) + 4
+    assert all(valid for _, _, valid in interior(r))
+
+
+@pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
+def test_groove_gets_valid_internal_nodes(tmp_path, flags):
+    r, out = fillet(tmp_path, "groove.step", *flags)
+    check_filleted(r, out)
+    assert len(r["correction"]["fillets"]) == 2  # both concave floor arcs
+    nodes = interior(r)
+    assert len(nodes) >= 2 and all(valid for _, _, valid in nodes)
+
+
+def test_part_without_three_five_curves_is_unchanged(tmp_path):
+    r, out = fillet(tmp_path, "cylinder.step")
+    c = r["correction"]
+    assert c["fillets"] == [] and not c["remeshed"]
+    assert c["before"] == c["after"]
+    assert not (out / "filleted.brep").exists()
+
+
+def test_three_five_curve_without_concave_edge_is_reported(tmp_path):
+    """box_arc's 3-5 curve comes from an imprinted arc (valence 2), which is never filleted."""
+    r, _ = fillet(tmp_path, "box_arc.step")
+    c = r["correction"]
+    assert c["fillets"] == []
+    assert any("no concave feature curve" in n for n in c["notes"])
+    assert c["after"] == c["before"]
+
+
+def test_tet_mesh_input_is_refused(tmp_path):
+    """A tet mesh has no B-rep to fillet (gmsh, installed by scripts/deps.sh, makes one)."""
+    mesh = tmp_path / "cube.msh"
+    subprocess.run(["gmsh", str(SAMPLES / "cube.step"), "-3", "-nt", "1", "-clmax", "0.3", "-format", "msh4",
+                    "-o", str(mesh), "-v", "1"], check=True, timeout=120)
+    code, _, err = run("correct", mesh, "--method", "fillet", "--out", tmp_path / "out", timeout=120)
+    assert code == 2
+    assert "tet mesh" in err and "--method snap" in err
