@@ -158,6 +158,23 @@ class Correction(unittest.TestCase):
             FreeCAD.closeDocument(doc.Name)
 
 
+    def test_fillet_adds_the_filleted_part_and_leaves_the_users_part(self):
+        doc = FreeCAD.newDocument("FrameFixFillet")
+        try:
+            part = doc.addObject("Part::Feature", "Notch")
+            part.Shape = Part.read(NOTCH)
+            doc.recompute()
+            volume, faces = part.Shape.Volume, len(part.Shape.Faces)
+            curves = analysis.make_analysis(part, method="fillet")
+            self.assertEqual((curves.Before35, curves.Curves35), (1, 0))
+            filleted = doc.getObject("FilletedPart")
+            self.assertEqual(len(filleted.Shape.Faces), faces + 1)  # the fillet's face
+            self.assertGreater(filleted.Shape.Volume, volume)  # a concave edge gains material
+            self.assertEqual((part.Shape.Volume, len(part.Shape.Faces)), (volume, faces))
+        finally:
+            FreeCAD.closeDocument(doc.Name)
+
+
 class MovedPart(unittest.TestCase):
     def test_moving_the_part_reruns_and_keeps_one_3_5_curve(self):
         doc = FreeCAD.newDocument("FrameFixMoved")
@@ -207,14 +224,14 @@ class BackendInfo(unittest.TestCase):
         from framefix_wb import runs
         info = runs.backend_info()
         methods = {m["name"]: m["available"] for m in info["correction_methods"]}
-        self.assertEqual(methods, {"snap": True, "fillet": False, "extrude-curves": False,
+        self.assertEqual(methods, {"snap": True, "fillet": True, "extrude-curves": False,
                                    "extrude-nodes": False})
-        self.assertEqual(info["block_methods"], ["snap", "none"])
+        self.assertEqual(info["block_methods"], ["snap", "fillet", "none"])
         self.assertEqual(info["default_target_tets"], 50000)
 
     def test_an_unavailable_method_is_refused_before_a_run(self):
         from framefix_wb import runs
         from framefix_wb.errors import FrameFixError
         with self.assertRaises(FrameFixError) as e:
-            runs.check_method("fillet")
-        self.assertIn("fillet", str(e.exception))
+            runs.check_method("extrude-curves")
+        self.assertIn("extrude-curves", str(e.exception))

@@ -64,6 +64,7 @@ def timeout_from_env(default=DEFAULT_TIMEOUT_S):
 
 
 BLOCKS_VTK = "blocks.vtk"  # the tets labelled by block, beside report.json
+FILLETED_BREP = "filleted.brep"  # the fillet correction's solid, beside report.json
 
 
 class AnalysisJob:
@@ -132,6 +133,10 @@ class AnalysisJob:
                 raise BackendError("the backend's %s names blocks its report does not have"
                                    % BLOCKS_VTK)
             report["block_mesh"] = mesh
+        filleted = os.path.join(self.out_dir, FILLETED_BREP)
+        if os.path.exists(filleted):
+            with open(filleted) as f:
+                report["filleted_brep"] = f.read()
         return report
 
     def timeout_error(self):

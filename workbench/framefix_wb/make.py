@@ -11,6 +11,7 @@ runs.py, below taskpanels/ and commands/.
 import json
 
 import FreeCAD
+import Part
 
 from . import runs, shapes, style
 from .errors import FrameFixError
@@ -108,12 +109,24 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
                               "FrameFixCorrection" if method else "FrameFixAnalysis")
         group.Label = _group_label(source, method, blocks)
         curves, parts = _add_parts(doc, method, blocks)
+        if report.get("filleted_brep"):
+            parts.append(_add_filleted(doc, source, report["filleted_brep"]))
         curves.Source, curves.Size, curves.Blocks, curves.Method = source, size, blocks, method
         curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
         group.addObjects(parts)
         _fade_source(curves, source)
         _recompute(doc, parts)
     return curves
+
+
+def _add_filleted(doc, source, brep):
+    """The fillet correction's solid as a new Part feature (the user's part is not touched)."""
+    shape = Part.Shape()
+    shape.importBrepFromString(brep)
+    obj = doc.addObject("Part::Feature", "FilletedPart")
+    obj.Label = "Filleted %s" % shapes.label_of(source)
+    obj.Shape = shape
+    return obj
 
 
 def _group_label(source, method, blocks):

@@ -89,8 +89,15 @@ def _correction(c):
               "points": _points(p.get("points", []) if isinstance(p, dict) else None,
                                 "correction.snapped_paths[%d]" % i)}
              for i, p in enumerate(c.get("snapped_paths") or [])]
+    fillets = []
+    for i, f in enumerate(c.get("fillets") or []):
+        if not isinstance(f, dict) or not isinstance(f.get("edge"), int) or not isinstance(f.get("done"), bool):
+            _fail("correction.fillets[%d] has no integer edge or boolean done" % i)
+        fillets.append({"edge": f["edge"], "radius": float(f.get("radius", 0)), "done": f["done"],
+                        "reason": str(f.get("reason", ""))})
     return {"method": str(c.get("method", "")), "before": dict(c["before"]),
-            "changed_curves": int(c.get("changed_curves", 0)), "snapped_paths": paths}
+            "changed_curves": int(c.get("changed_curves", 0)), "snapped_paths": paths,
+            "fillets": fillets, "notes": [str(n) for n in c.get("notes") or []]}
 
 
 BLOCK_COUNTS = ("count", "valid", "conforming_pairs", "pairs", "flat_corners", "flat_edges")
