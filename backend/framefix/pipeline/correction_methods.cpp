@@ -1,6 +1,7 @@
 #include "framefix/pipeline/correction_methods.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "framefix/core/error.h"
 #include "framefix/pipeline/fillet_plan.h"
@@ -25,12 +26,15 @@ bool apply_fillet(CorrectionContext& c) {
     if (!c.model)
         throw Error("correct", "method 'fillet' changes the B-rep and this input is a tet mesh; give the CAD part "
                                "(.step, .brep, .iges) or use --method snap");
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
     const FilletPlan plan = plan_fillets(*c.model, c.mesh.features, c.graph, c.graph.h_mean);
     c.record.notes = plan.notes;
     if (plan.requests.empty()) return false;
     FilletResult f = fillet_edges(*c.model, plan.requests);
     c.record.fillets = f.fillets;
     c.record.fillet_how = f.how;
+    c.record.fillet_seconds = since(t0);
     if (std::none_of(f.fillets.begin(), f.fillets.end(), [](const FilletOutcome& o) { return o.done; })) return false;
     c.record.filleted = std::make_shared<const BrepModel>(std::move(f.model));
     MeshStage m;
@@ -42,6 +46,7 @@ bool apply_fillet(CorrectionContext& c) {
     m.attempts = std::move(meshing.attempts);
     m.topology = build_topology(m.tets);
     c.mesh = std::move(m);
+    c.record.remesh_seconds = since(t0) - c.record.fillet_seconds;
     c.field.constraints = boundary_constraints(c.mesh.tets, c.mesh.features);
     c.record.remeshed = true;
     return true;

@@ -85,6 +85,8 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"fillets", fillets},
             {"notes", c.notes},
             {"remeshed", c.remeshed},
+            {"fillet_seconds", c.fillet_seconds},
+            {"remesh_seconds", c.remesh_seconds},
             {"before", summary_json(c.before)},
             {"after", summary_json(after)},
             {"changed_curves", c.snap.snapped_curve_ids.size()},

@@ -49,6 +49,8 @@ struct Correction {
     std::string fillet_how;
     std::shared_ptr<const BrepModel> filleted;
     bool remeshed = false;          // the mesh was replaced (field_before lives on the old one)
+    double fillet_seconds = 0;      // choosing the edges and filleting (OCCT), before the remesh
+    double remesh_seconds = 0;      // features and tets of the filleted solid
     bool changed = false;           // the method changed the set-up; field and graph were re-solved
     double rotated_fraction = 0;    // vertices whose frame turned by more than 10 degrees
     double seconds = 0;             // method + re-solve + re-extraction
