@@ -153,7 +153,9 @@ TEST(CorrectionRegistry, ListsThePapersFourMethodsSnapFirst) {
         EXPECT_EQ(m.available, m.apply != nullptr) << m.name;
     }
     EXPECT_EQ(&find_correction_method("snap"), &all[0]);
-    EXPECT_THROW(find_correction_method("fillet"), Error);
+    EXPECT_EQ(&find_correction_method("fillet"), &all[1]);
+    EXPECT_THROW(find_correction_method("extrude-curves"), Error);  // not available yet
+    EXPECT_THROW(find_correction_method("chamfer"), Error);
 }
 
 TEST(Stage, NamesAreTheProgressNames) {
