@@ -68,6 +68,21 @@ class Pure(unittest.TestCase):
         with self.assertRaisesRegex(BackendError, r"curves\[0\]"):
             report.check_report(bad)
 
+    def test_fillets_are_listed_with_their_radii_and_outcomes(self):
+        summary = dict.fromkeys(report.SUMMARY_KEYS, 0)
+        r = report.check_report({"version": 1, "singularities": {"summary": summary, "curves": []},
+                                 "correction": {"method": "fillet", "before": summary, "fillets": [
+                                     {"edge": 18, "radius": 0.0884, "done": True},
+                                     {"edge": 3, "radius": 0.03, "done": False, "reason": "OCCT could not"}],
+                                     "notes": ["3-5 curve 2 has no concave feature curve"]}})
+        self.assertEqual(report.fillet_lines(r["correction"]),
+                         ["Edge18 filleted, radius 0.0884", "Edge3 not filleted: OCCT could not",
+                          "3-5 curve 2 has no concave feature curve"])
+        self.assertIn("1 of 2 edges filleted (Edge18 r 0.0884)", report.run_text(r))
+        with self.assertRaisesRegex(BackendError, r"fillets\[0\]"):
+            report.check_report({"version": 1, "singularities": {"summary": summary, "curves": []},
+                                 "correction": {"before": summary, "fillets": [{"edge": "x"}]}})
+
 
 class Layers(unittest.TestCase):
     """objects/ (stored in documents) sits below the make layer, panels and commands."""

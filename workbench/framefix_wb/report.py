@@ -179,9 +179,22 @@ def summary_text(summary, mesh=None):
     return text
 
 
+def fillet_lines(correction):
+    """One line per edge the fillet correction tried, then its notes; [] for other methods."""
+    if not correction:
+        return []
+    lines = ["Edge%d filleted, radius %.4g" % (f["edge"], f["radius"]) if f["done"] else
+             "Edge%d not filleted: %s" % (f["edge"], f["reason"]) for f in correction.get("fillets", [])]
+    return lines + list(correction.get("notes", []))
+
+
 def run_text(report):
     """The console line of a checked report: the blocks first when there are some."""
     text = summary_text(report["summary"], report["mesh"])
+    done = [f for f in (report["correction"] or {}).get("fillets", []) if f["done"]]
+    if report["correction"] and report["correction"].get("fillets"):
+        text += "; %d of %d edges filleted (%s)" % (len(done), len(report["correction"]["fillets"]),
+                                                   ", ".join("Edge%d r %.3g" % (f["edge"], f["radius"]) for f in done))
     if report.get("blocks") is not None:
         text = "%s; curves after the correction: %s" % (blocks_text(report["blocks"]), text) \
             if report["correction"] else "%s; %s" % (blocks_text(report["blocks"]), text)

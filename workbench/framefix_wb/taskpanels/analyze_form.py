@@ -6,7 +6,7 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
-from ..report import blocks_text, curve_breakdown
+from ..report import blocks_text, curve_breakdown, fillet_lines
 
 
 class AnalyzeForm(QtWidgets.QWidget):
@@ -134,6 +134,10 @@ class AnalyzeForm(QtWidgets.QWidget):
                 style.legend_html(dict(style.NODE_COLORS, **(
                     {"paths": (style.SNAPPED_PATH_COLOR, "snapped path")} if correction
                     else {})))))
+        fillets = fillet_lines(correction)
+        if fillets:
+            self.summary.setText(self.summary.text() + "<br><b>Fillets:</b><br>" +
+                                 "<br>".join(html.escape(line) for line in fillets))
         self.estimate.setText("{:,} tets, size {:.4g} (this run)".format(
             int(mesh.get("tets", 0)), float(mesh.get("size", 0))))
         self.bar.setValue(1000)
