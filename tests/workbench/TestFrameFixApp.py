@@ -171,6 +171,14 @@ class Correction(unittest.TestCase):
             self.assertEqual(len(filleted.Shape.Faces), faces + 1)  # the fillet's face
             self.assertGreater(filleted.Shape.Volume, volume)  # a concave edge gains material
             self.assertEqual((part.Shape.Volume, len(part.Shape.Faces)), (volume, faces))
+            # A run from the panel on the same analysis replaces the filleted solid.
+            from framefix_wb import make, runs, shapes
+            solid = shapes.solid_of(part)
+            report = runs.run(solid, None, method="fillet")
+            make.update_analysis(curves, 0, report, runs.input_digest(solid, 0, "fillet"), "fillet")
+            filleted = [o for o in doc.Objects if o.Name.startswith("FilletedPart")]
+            self.assertEqual(len(filleted), 1)
+            self.assertEqual(len(filleted[0].Shape.Faces), faces + 1)
         finally:
             FreeCAD.closeDocument(doc.Name)
 

@@ -161,9 +161,22 @@ def update_analysis(curves, size, report, digest, method=""):
     with _Transaction(doc, _kind(method, curves.Blocks)):
         curves.Size, curves.Method = float(size or 0.0), method
         curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
+        if report.get("filleted_brep"):
+            _replace_filleted(curves, report["filleted_brep"])
         _fade_source(curves, curves.Source)
         _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])
     return curves
+
+
+def _replace_filleted(curves, brep):
+    """The analysis group's filleted solid, made again from a new run (added when missing)."""
+    groups = [o for o in curves.InList if o.isDerivedFrom("App::DocumentObjectGroup")]
+    for group in groups:
+        for obj in group.Group:
+            if obj.Name.startswith("FilletedPart"):
+                group.removeObject(obj)
+                curves.Document.removeObject(obj.Name)
+        group.addObject(_add_filleted(curves.Document, curves.Source, brep))
 
 
 def make_blocks(source, size=None, method="snap", report=None, digest=None, backend=None):
