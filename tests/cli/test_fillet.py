@@ -41,6 +41,18 @@ def test_notch_gets_the_papers_valid_node(tmp_path, flags):
     assert interior(r) == [(1, 3, True)]  # one valence-3 curve down to the fillet, three valence-5
 
 
+def test_notch_graph_maps_back_onto_the_concave_arc(tmp_path):
+    """The node and curve ends on the fillet go to the arc it replaced (radius 0.5 about x = y = 1,
+    at z = 0.5), so the corrected graph lies on the original part."""
+    r, out = fillet(tmp_path, "notch.step")
+    m = r["correction"]["mapped"]
+    assert m["summary"]["meshable"] and m["moved_nodes"] >= 1 and m["moved_points"] > 0
+    on_arc = [n for n in m["nodes"] if abs(((n["position"][0] - 1) ** 2 + (n["position"][1] - 1) ** 2) ** 0.5 - 0.5) < 1e-6
+              and abs(n["position"][2] - 0.5) < 1e-6]
+    assert len(on_arc) == m["moved_nodes"] and all(n["boundary"] and n["valid"] for n in on_arc)
+    assert (out / "mapped_curves.vtk").stat().st_size > 0
+
+
 @pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
 def test_half_sphere_box_gets_four_extra_valence5_curves(tmp_path, flags):
     r, out = fillet(tmp_path, "half_sphere_box.step", *flags)

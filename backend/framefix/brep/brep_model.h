@@ -43,6 +43,7 @@ Points vertex_points(const BrepModel& model);
 // Distance from p to B-rep edge `edge` (1-based, Edge<i>) / face `face` (Face<i>), model units.
 double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p);
 double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d& p);
+Eigen::Vector3d closest_point_on_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p);
 
 // Size h for about `target_tets` near-uniform tets in this solid.
 double default_size(const BrepModel& model, int target_tets = kDefaultTargetTets);

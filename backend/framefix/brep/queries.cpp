@@ -10,11 +10,16 @@
 namespace framefix {
 namespace {
 
-double distance_to(const TopoDS_Shape& target, const Eigen::Vector3d& p) {
+// Distance from p to target, and the closest point of target in `closest` when given.
+double distance_to(const TopoDS_Shape& target, const Eigen::Vector3d& p, Eigen::Vector3d* closest = nullptr) {
     return occt_call("brep", "distance query", [&] {
         const TopoDS_Vertex v = BRepBuilderAPI_MakeVertex(gp_Pnt(p.x(), p.y(), p.z()));
         BRepExtrema_DistShapeShape dist(v, target);
-        if (!dist.IsDone()) throw Error("brep", "distance query failed");
+        if (!dist.IsDone() || dist.NbSolution() < 1) throw Error("brep", "distance query failed");
+        if (closest) {
+            const gp_Pnt q = dist.PointOnShape2(1);
+            *closest = Eigen::Vector3d(q.X(), q.Y(), q.Z());
+        }
         return dist.Value();
     });
 }
@@ -38,6 +43,13 @@ double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d&
         throw Error("brep", "Edge" + std::to_string(edge) + " does not exist; the model has " +
                                 std::to_string(model.num_edges) + " edges");
     return distance_to(model.shape->edges(edge), p);
+}
+
+Eigen::Vector3d closest_point_on_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p) {
+    FF_ASSERT(model.shape && edge >= 1 && edge <= model.num_edges);
+    Eigen::Vector3d q;
+    distance_to(model.shape->edges(edge), p, &q);
+    return q;
 }
 
 double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d& p) {

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "framefix/pipeline/correction_methods.h"
+#include "framefix/pipeline/fillet_map.h"
 #include "framefix/pipeline/solve_stages.h"
 
 namespace framefix::detail {
@@ -33,6 +34,12 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
         graph = find_singularities(mesh, field, options);
         if (!c.remeshed)  // frames of another mesh cannot be compared vertex by vertex
             c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
+        if (c.filleted && model) {
+            MappedGraph m = map_back(*model, c.fillets, graph);
+            c.mapped = std::move(m.graph);
+            c.mapped_points = m.moved_points;
+            c.mapped_nodes = m.moved_nodes;
+        }
     }
     report(options.progress, "correct", 1.0);
     c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

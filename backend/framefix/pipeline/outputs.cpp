@@ -160,6 +160,10 @@ std::vector<std::string> write_outputs(const RunResult& r, const std::string& di
         write_vtk(paths_grid(correction->snap), path("snapped_curves.vtk"), "FrameFix snapped curves (boundary paths)");
         written.push_back(path("singular_curves_before.vtk"));
         written.push_back(path("snapped_curves.vtk"));
+        if (correction->mapped) {
+            write_vtk(curves_grid(*correction->mapped), path("mapped_curves.vtk"), "FrameFix corrected curves mapped onto the original part");
+            written.push_back(path("mapped_curves.vtk"));
+        }
         if (correction->filleted)
             for (const char* name : {"filleted.brep", "filleted.step"}) {
                 write_shape(*correction->filleted, path(name));

@@ -85,6 +85,12 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"fillets", fillets},
             {"notes", c.notes},
             {"remeshed", c.remeshed},
+            {"mapped", c.mapped ? json{{"summary", summary_json(c.mapped->summary)},
+                                       {"moved_points", c.mapped_points},
+                                       {"moved_nodes", c.mapped_nodes},
+                                       {"curves", singularities_json(*c.mapped)["curves"]},
+                                       {"nodes", singularities_json(*c.mapped)["nodes"]}}
+                                : json(nullptr)},
             {"fillet_seconds", c.fillet_seconds},
             {"remesh_seconds", c.remesh_seconds},
             {"before", summary_json(c.before)},

@@ -3,6 +3,7 @@
 #include <string>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "framefix/brep/fillet.h"
@@ -49,6 +50,8 @@ struct Correction {
     std::string fillet_how;
     std::shared_ptr<const BrepModel> filleted;
     bool remeshed = false;          // the mesh was replaced (field_before lives on the old one)
+    std::optional<SingularityGraph> mapped;  // fillet: the corrected graph on the original part
+    int mapped_points = 0, mapped_nodes = 0;  // fillet: curve points and nodes moved onto the concave edges
     double fillet_seconds = 0;      // choosing the edges and filleting (OCCT), before the remesh
     double remesh_seconds = 0;      // features and tets of the filleted solid
     bool changed = false;           // the method changed the set-up; field and graph were re-solved
