@@ -20,6 +20,19 @@ bool apply_snap(CorrectionContext& c) {
     return true;
 }
 
+// Features and tets of a new solid at the size h of the mesh it replaces.
+MeshStage remesh(const BrepModel& model, const RunOptions& options, double h) {
+    MeshStage m;
+    m.features = classify_features(model, options.features);
+    MeshOptions mo = options.mesh;
+    mo.size = h;
+    BrepMeshing meshing = mesh_brep(model, m.features, mo);
+    m.tets = std::move(meshing.tets);
+    m.attempts = std::move(meshing.attempts);
+    m.topology = build_topology(m.tets);
+    return m;
+}
+
 // Fillet insertion on the B-rep (paper section 4.3): the concave edges next to each 3-5 curve are
 // filleted by OCCT, and the filleted solid is meshed again at the same size.
 bool apply_fillet(CorrectionContext& c) {
@@ -37,15 +50,7 @@ bool apply_fillet(CorrectionContext& c) {
     c.record.fillet_seconds = since(t0);
     if (std::none_of(f.fillets.begin(), f.fillets.end(), [](const FilletOutcome& o) { return o.done; })) return false;
     c.record.filleted = std::make_shared<const BrepModel>(std::move(f.model));
-    MeshStage m;
-    m.features = classify_features(*c.record.filleted, c.options.features);
-    MeshOptions mo = c.options.mesh;
-    mo.size = c.mesh.tets.size;
-    BrepMeshing meshing = mesh_brep(*c.record.filleted, m.features, mo);
-    m.tets = std::move(meshing.tets);
-    m.attempts = std::move(meshing.attempts);
-    m.topology = build_topology(m.tets);
-    c.mesh = std::move(m);
+    c.mesh = remesh(*c.record.filleted, c.options, c.mesh.tets.size);
     c.record.remesh_seconds = since(t0) - c.record.fillet_seconds;
     c.field.constraints = boundary_constraints(c.mesh.tets, c.mesh.features);
     c.record.remeshed = true;
