@@ -8,7 +8,7 @@ import unittest
 import FreeCAD
 import Part
 
-from framefix_wb import analysis
+from framefix_wb import analysis, make, runs, shapes
 
 SAMPLES = os.environ.get("FRAMEFIX_SAMPLES") or os.path.join(
     os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "samples")
@@ -146,41 +146,35 @@ class Objects(unittest.TestCase):
 
 
 class Correction(unittest.TestCase):
-    def test_boundary_snapping_removes_the_notchs_3_5_curve(self):
-        doc = FreeCAD.newDocument("FrameFixCorrection")
-        try:
-            part = doc.addObject("Part::Feature", "Notch")
-            part.Shape = Part.read(NOTCH)
-            doc.recompute()
-            curves = analysis.make_analysis(part, method="snap")
-            self.assertEqual((curves.Before35, curves.Curves35), (1, 0))
-        finally:
-            FreeCAD.closeDocument(doc.Name)
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("FrameFixCorrection")
+        self.part = self.doc.addObject("Part::Feature", "Notch")
+        self.part.Shape = Part.read(NOTCH)
+        self.doc.recompute()
 
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def test_boundary_snapping_removes_the_notchs_3_5_curve(self):
+        curves = analysis.make_analysis(self.part, method="snap")
+        self.assertEqual((curves.Before35, curves.Curves35), (1, 0))
 
     def test_fillet_adds_the_filleted_part_and_leaves_the_users_part(self):
-        doc = FreeCAD.newDocument("FrameFixFillet")
-        try:
-            part = doc.addObject("Part::Feature", "Notch")
-            part.Shape = Part.read(NOTCH)
-            doc.recompute()
-            volume, faces = part.Shape.Volume, len(part.Shape.Faces)
-            curves = analysis.make_analysis(part, method="fillet")
-            self.assertEqual((curves.Before35, curves.Curves35), (1, 0))
-            filleted = doc.getObject("FilletedPart")
-            self.assertEqual(len(filleted.Shape.Faces), faces + 1)  # the fillet's face
-            self.assertGreater(filleted.Shape.Volume, volume)  # a concave edge gains material
-            self.assertEqual((part.Shape.Volume, len(part.Shape.Faces)), (volume, faces))
-            # A run from the panel on the same analysis replaces the filleted solid.
-            from framefix_wb import make, runs, shapes
-            solid = shapes.solid_of(part)
-            report = runs.run(solid, None, method="fillet")
-            make.update_analysis(curves, 0, report, runs.input_digest(solid, 0, "fillet"), "fillet")
-            filleted = [o for o in doc.Objects if o.Name.startswith("FilletedPart")]
-            self.assertEqual(len(filleted), 1)
-            self.assertEqual(len(filleted[0].Shape.Faces), faces + 1)
-        finally:
-            FreeCAD.closeDocument(doc.Name)
+        part = self.part
+        volume, faces = part.Shape.Volume, len(part.Shape.Faces)
+        curves = analysis.make_analysis(part, method="fillet")
+        self.assertEqual((curves.Before35, curves.Curves35), (1, 0))
+        filleted = self.doc.getObject("FilletedPart")
+        self.assertEqual(len(filleted.Shape.Faces), faces + 1)  # the fillet's face
+        self.assertGreater(filleted.Shape.Volume, volume)  # a concave edge gains material
+        self.assertEqual((part.Shape.Volume, len(part.Shape.Faces)), (volume, faces))
+        # A run from the panel on the same analysis replaces the filleted solid.
+        solid = shapes.solid_of(part)
+        report = runs.run(solid, None, method="fillet")
+        make.update_analysis(curves, 0, report, runs.input_digest(solid, 0, "fillet"), "fillet")
+        filleted = [o for o in self.doc.Objects if o.Name.startswith("FilletedPart")]
+        self.assertEqual(len(filleted), 1)
+        self.assertEqual(len(filleted[0].Shape.Faces), faces + 1)
 
 
 class MovedPart(unittest.TestCase):

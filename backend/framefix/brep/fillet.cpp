@@ -109,7 +109,7 @@ void follow(BRepFilletAPI_MakeFillet& mk, size_t from, std::vector<TopoDS_Shape>
     }
 }
 
-Plan plan_fillets(const BrepModel::Shape& shape, const std::vector<FilletRequest>& req, const FilletOptions& o) {
+Plan try_fillets(const BrepModel::Shape& shape, const std::vector<FilletRequest>& req, const FilletOptions& o) {
     Plan p;
     std::vector<TopoDS_Shape> edges;
     for (const FilletRequest& q : req) {
@@ -214,7 +214,7 @@ FilletResult fillet_edges(const BrepModel& model, const std::vector<FilletReques
     }
     const IsolatedTask task{"correct", "OpenCASCADE's fillet builder", "fillet the edges in the CAD tool", options.timeout_s};
     const std::string bytes = run_isolated(task, [&] {
-        const Plan p = plan_fillets(*model.shape, requests, options);
+        const Plan p = try_fillets(*model.shape, requests, options);
         ByteWriter w;
         w.text(p.how);
         for (const FilletOutcome& f : p.out) {

@@ -56,6 +56,16 @@ bool is_junk(const ChainContext& c, const RawChain& ch, double h) {
 
 }  // namespace
 
+std::vector<int> close_groups(const std::vector<Eigen::Vector3d>& points, double radius) {
+    DisjointSet sets(int(points.size()));
+    for (size_t i = 0; i < points.size(); ++i)
+        for (size_t j = i + 1; j < points.size(); ++j)
+            if ((points[i] - points[j]).norm() < radius) sets.unite(int(i), int(j));
+    std::vector<int> groups;
+    for (size_t i = 0; i < points.size(); ++i) groups.push_back(sets.find(int(i)));
+    return groups;
+}
+
 EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<RawChain>& chains) {
     EndStats stats;
     std::vector<std::pair<int, Eigen::Vector3d>> junction;  // (cluster, tet centroid) of node tets
@@ -87,12 +97,10 @@ EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<R
     }
 
     // Dead ends close together share a node, so that a curve with a gap can be joined again.
-    DisjointSet dead_sets(int(dead.size()));
-    for (size_t i = 0; i < dead.size(); ++i)
-        for (size_t j = i + 1; j < dead.size(); ++j)
-            if ((tet_centroid(c.mesh, dead[i]->tet) - tet_centroid(c.mesh, dead[j]->tet)).norm() < attach_radius)
-                dead_sets.unite(int(i), int(j));
-    for (size_t i = 0; i < dead.size(); ++i) dead[i]->group = dead_sets.find(int(i));
+    std::vector<Eigen::Vector3d> at;
+    for (const RawEnd* e : dead) at.push_back(tet_centroid(c.mesh, e->tet));
+    const std::vector<int> groups = close_groups(at, attach_radius);
+    for (size_t i = 0; i < dead.size(); ++i) dead[i]->group = groups[i];
 
     // Boundary ends sharing a vertex are one boundary node, unless the vertex lies on a B-rep
     // edge: ends on either side of a curve are in different faces, hence different surface

@@ -162,12 +162,10 @@ void resolve_dead_ends(const Context& c, double radius, std::vector<VChain>& cha
                 dead.push_back(&e);
             }
         }
-    DisjointSet sets(int(dead.size()));
-    for (size_t i = 0; i < dead.size(); ++i)
-        for (size_t j = i + 1; j < dead.size(); ++j)
-            if ((point(c.mesh, dead[i]->vertex) - point(c.mesh, dead[j]->vertex)).norm() < radius)
-                sets.unite(int(i), int(j));
-    for (size_t i = 0; i < dead.size(); ++i) dead[i]->group = sets.find(int(i));
+    std::vector<Eigen::Vector3d> at;
+    for (const VEnd* e : dead) at.push_back(point(c.mesh, e->vertex));
+    const std::vector<int> groups = detail::close_groups(at, radius);
+    for (size_t i = 0; i < dead.size(); ++i) dead[i]->group = groups[i];
 }
 
 // Boundary ends at one vertex, or at two vertices of a boundary triangle that are both off the
