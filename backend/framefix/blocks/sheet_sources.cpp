@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <unordered_map>
 
 #include "framefix/frame_field/projection.h"
-#include "framefix/mesh/keys.h"
+#include "framefix/streamlines/feature_seeds.h"
 
 namespace framefix {
 
@@ -106,79 +104,28 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
 std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features,
                                          const FrameField& field, const std::vector<SnappedPath>& paths) {
     const int nv = mesh.num_vertices();
-    // Outward area normals per (vertex, B-rep face) and per vertex; boundary triangles per mesh edge.
-    std::unordered_map<PairKey, Eigen::Vector3d> tag_normal;  // pair_key(vertex, tag, kAnyIdStride)
-    std::vector<Eigen::Vector3d> vert_normal(nv, Eigen::Vector3d::Zero());
-    std::unordered_map<PairKey, std::vector<int>> edge_tags;
-    auto ekey = [nv](int a, int b) { return edge_key(a, b, nv); };
+    std::vector<Eigen::Vector3d> vert_normal(nv, Eigen::Vector3d::Zero());  // outward area normals
     for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) {
         const Eigen::Vector3i f = mesh.boundary_faces.row(b).transpose();
         const Eigen::Vector3d n = (mesh.points.row(f[1]) - mesh.points.row(f[0]))
                                       .cross(mesh.points.row(f[2]) - mesh.points.row(f[0]))
                                       .transpose();
-        const int tag = mesh.face_tags[b];
-        for (int k = 0; k < 3; ++k) {
-            auto [it, fresh] = tag_normal.try_emplace(pair_key(f[k], tag, kAnyIdStride), n);
-            if (!fresh) it->second += n;
-            vert_normal[f[k]] += n;
-            edge_tags[ekey(f[k], f[(k + 1) % 3])].push_back(tag);
-        }
+        for (int k = 0; k < 3; ++k) vert_normal[f[k]] += n;
     }
     std::vector<char> on_feature(nv, 0);
     for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
         if (features.valence_of(mesh.edge_tags[e]) > 0) on_feature[mesh.feature_edges(e, 0)] = on_feature[mesh.feature_edges(e, 1)] = 1;
 
     std::vector<SheetSource> out;
-    std::map<int, std::vector<int>> concave;  // B-rep edge -> its mesh feature edges
-    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
-        if (features.valence_of(mesh.edge_tags[e]) == 3) concave[mesh.edge_tags[e]].push_back(e);
-    for (const auto& [tag, edges] : concave) {
-        // Order the curve's vertices into a chain (open: from a degree-1 end).
-        std::unordered_map<int, std::vector<int>> adj;
-        std::map<int, int> face_count;
-        for (int e : edges) {
-            const int a = mesh.feature_edges(e, 0), b = mesh.feature_edges(e, 1);
-            adj[a].push_back(b), adj[b].push_back(a);
-            for (int t : edge_tags[ekey(a, b)]) face_count[t] += 1;
-        }
-        std::vector<std::pair<int, int>> by_count;
-        for (auto [t, c] : face_count) by_count.push_back({c, t});
-        std::sort(by_count.rbegin(), by_count.rend());
-        if (by_count.size() < 2) continue;
-        int start = adj.begin()->first;
-        for (const auto& [v, nb] : adj)
-            if (nb.size() == 1) { start = v; break; }
-        std::vector<int> chain{start};
-        for (int prev = -1, cur = start;;) {
-            int next = -1;
-            for (int w : adj[cur])
-                if (w != prev && (chain.size() < 2 || w != chain.front())) { next = w; break; }
-            if (next < 0 || std::find(chain.begin(), chain.end(), next) != chain.end()) break;
-            chain.push_back(next), prev = cur, cur = next;
-        }
+    std::vector<int> concave;
+    for (const EdgeFeature& e : features.edges)
+        if (e.valence == 3) concave.push_back(e.edge);
+    for (const FeatureSeeds& curve : feature_seeds(mesh, features, field, concave)) {
         SheetSource src;
         src.kind = SheetSource::Concave;
-        src.name = "concave:" + std::to_string(tag);
+        src.name = "concave:" + std::to_string(curve.edge);
         src.boundary_end[0] = src.boundary_end[1] = true;
-        const int m = int(chain.size());
-        for (int i = 0; i < m; ++i) {
-            const int v = chain[i];
-            SheetSeed seed;
-            seed.point = mesh.points.row(v).transpose();
-            seed.tangent = unit_or_zero((mesh.points.row(chain[std::min(i + 1, m - 1)]) -
-                                         mesh.points.row(chain[std::max(i - 1, 0)])).transpose());
-            for (int s = 0; s < 2; ++s) {
-                auto it = tag_normal.find(pair_key(v, by_count[s].second, kAnyIdStride));
-                if (it == tag_normal.end() || it->second.norm() == 0) continue;
-                const Eigen::Vector3d inward = -it->second.normalized();
-                int best = 0;
-                for (int k = 1; k < 3; ++k)
-                    if (std::abs(axis(field, v, k).dot(inward)) > std::abs(axis(field, v, best).dot(inward))) best = k;
-                const Eigen::Vector3d a = axis(field, v, best);
-                seed.directions.push_back(a.dot(inward) < 0 ? Eigen::Vector3d(-a) : a);
-            }
-            src.seeds.push_back(std::move(seed));
-        }
+        for (const FeatureSeed& f : curve.seeds) src.seeds.push_back({f.point, f.tangent, f.directions});
         out.push_back(std::move(src));
     }
 

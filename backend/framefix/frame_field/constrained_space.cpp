@@ -29,11 +29,17 @@ double blocked_sum(int rows, int threads, RowFn&& row_value) {
     return total;
 }
 
+NormalAligned singular_family(const Constraints& cons, int v) {
+    const Eigen::Vector3d n = cons.normal.row(v).transpose();
+    if (!(n.norm() > 1e-12)) throw Error("field", "constraints: singular vertex " + std::to_string(v) + " has a zero axis");
+    return normal_aligned(n);
+}
+
 }  // namespace
 
 ConstrainedSpace make_space(const Constraints& cons) {
     const int nv = int(cons.kind.size());
-    if (cons.normal.rows() != nv || cons.fixed.rows() != nv)
+    if (cons.normal.rows() != nv || cons.fixed.rows() != nv || (!cons.singular.empty() && int(cons.singular.size()) != nv))
         throw Error("field", "constraints: kind has " + std::to_string(nv) + " rows but normal/fixed have " +
                                  std::to_string(cons.normal.rows()) + "/" + std::to_string(cons.fixed.rows()));
     ConstrainedSpace s;
@@ -48,6 +54,10 @@ ConstrainedSpace make_space(const Constraints& cons) {
             s.family[v] = int(s.families.size());
             s.families.push_back(normal_aligned(n));
             s.c.row(v) = s.families.back().c.transpose();
+        } else if (s.kind[v] == ConstraintKind::Fixed && !cons.singular.empty() && cons.singular[size_t(v)]) {
+            const NormalAligned fam = singular_family(cons, v);
+            s.c.row(v) = fam.c.transpose();
+            s.fixed_rotation[v] = normal_aligned_rotation(fam, Eigen::Vector2d(0, 1));  // any turn about the axis
         } else if (s.kind[v] == ConstraintKind::Fixed) {
             const SH9 g = cons.fixed.row(v).transpose();
             const ProjectedFrame f = project_frame(g);

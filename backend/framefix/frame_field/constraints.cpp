@@ -153,3 +153,15 @@ Constraints boundary_constraints(const TetMesh& mesh, const FeatureSet& features
 }
 
 }  // namespace framefix
+
+namespace framefix {
+
+void set_singular(Constraints& cons, int v, const Eigen::Vector3d& axis) {
+    if (cons.singular.empty()) cons.singular.assign(cons.kind.size(), 0);
+    cons.kind[size_t(v)] = ConstraintKind::Fixed;
+    cons.normal.row(v) = axis.normalized().transpose();
+    cons.fixed.row(v) = normal_aligned(axis.normalized()).c.transpose();
+    cons.singular[size_t(v)] = 1;
+}
+
+}  // namespace framefix

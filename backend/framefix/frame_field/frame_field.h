@@ -20,7 +20,15 @@ struct Constraints {
     std::vector<ConstraintKind> kind;                        // #V
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> normal;  // #V x 3, NormalAligned rows
     Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor> fixed;   // #V x 9, Fixed rows (unit frames)
+    // #V or empty. A Fixed vertex flagged here holds a singular frame with one imposed axis,
+    // normal.row(v): the axisymmetric element sqrt(7/12) D(R_n) e4 of that axis's tangency family,
+    // where a cross about the axis vanishes (the singular-node extrusion's constraint). Its fixed
+    // row is ignored.
+    std::vector<char> singular;
 };
+
+// Makes vertex v a singular frame about `axis` (Constraints::singular), sizing the flags first.
+void set_singular(Constraints& cons, int v, const Eigen::Vector3d& axis);
 
 // Fixed frames on feature-curve vertices and corners, normal-aligned on smooth boundary vertices,
 // free inside. Feature valences come from `features` (keyed by the mesh's edge tags).

@@ -5,7 +5,9 @@
 
 #include "framefix/core/error.h"
 #include "framefix/pipeline/fillet_plan.h"
+#include "framefix/mesh/boundary_surface.h"
 #include "framefix/pipeline/mesh_attempts.h"
+#include "framefix/tetgen/tetrahedralize.h"
 
 namespace framefix {
 namespace {
@@ -57,6 +59,46 @@ bool apply_fillet(CorrectionContext& c) {
     return true;
 }
 
+// Both extrusions: the planned points are inserted into a new mesh of the same boundary, which
+// carries the internal constraints. A TetGen failure is a reported failure, not an error.
+bool apply_extrusion(CorrectionContext& c, ExtrusionPlan plan) {
+    const auto t0 = std::chrono::steady_clock::now();
+    c.record.extrusion = std::move(plan);
+    ExtrusionPlan& p = c.record.extrusion;
+    if (p.points.rows() == 0) return false;
+    MeshOptions mo = c.options.mesh;
+    mo.size = c.mesh.tets.size;
+    TetMesh tets;
+    try {
+        tets = tetrahedralize(boundary_surface(c.mesh.tets).surface, mo, p.points);
+    } catch (const Error& e) {
+        p.failures.push_back({"mesh", "TetGen could not insert the streamline points: " + e.message()});
+        return false;
+    }
+    c.mesh.tets = std::move(tets);
+    c.mesh.topology = build_topology(c.mesh.tets);
+    c.field.constraints = boundary_constraints(c.mesh.tets, c.mesh.features);
+    c.record.constrained_points = add_internal_constraints(c.mesh.tets, p, c.field.constraints);
+    c.record.remeshed = true;
+    c.record.extrusion_seconds = p.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return c.record.constrained_points > 0;
+}
+
+ExtrusionOptions extrusion_options(const RunOptions& o) {
+    ExtrusionOptions e;
+    e.threads = o.threads;
+    return e;
+}
+
+bool apply_extrude_curves(CorrectionContext& c) {
+    return apply_extrusion(c, plan_curve_extrusion(c.mesh.tets, c.mesh.topology, c.mesh.features, c.field.frames, c.graph,
+                                                   extrusion_options(c.options)));
+}
+
+bool apply_extrude_nodes(CorrectionContext& c) {
+    return apply_extrusion(c, plan_node_extrusion(c.mesh.tets, c.mesh.topology, c.field.frames, c.graph, extrusion_options(c.options)));
+}
+
 std::string names() {
     std::string s;
     const auto& all = correction_methods();
@@ -70,8 +112,8 @@ const std::vector<CorrectionMethod>& correction_methods() {
     static const std::vector<CorrectionMethod> methods = {
         {"snap", "snap 3-5 curves onto the boundary (the paper's recommendation)", true, &apply_snap},
         {"fillet", "insert fillets on the B-rep along the concave feature curves that cause 3-5 curves", true, &apply_fillet},
-        {"extrude-curves", "extrude the concave feature curves into the volume along the field's stable direction", false, nullptr},
-        {"extrude-nodes", "extrude the boundary singular nodes into the volume along streamlines of the field", false, nullptr},
+        {"extrude-curves", "extrude the concave feature curves into the volume along the field's stable direction", true, &apply_extrude_curves},
+        {"extrude-nodes", "extrude the ends of the 3-5 curves into the volume along streamlines of the field", true, &apply_extrude_nodes},
     };
     return methods;
 }

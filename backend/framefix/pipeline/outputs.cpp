@@ -107,6 +107,18 @@ VtkGrid paths_grid(const SnapResult& snap) {
     return polylines_grid(lines, {source, forced});
 }
 
+// The extrusions' streamlines, with their stop reason (StopReason's number) and whether they are used.
+VtkGrid streamlines_grid(const ExtrusionPlan& plan) {
+    std::vector<const Points*> lines;
+    VtkArray used{"used", 1, {}}, stop{"stop_reason", 1, {}};
+    for (const auto& l : plan.streamlines) {
+        lines.push_back(&l.line.points);
+        used.data.push_back(l.used);
+        stop.data.push_back(int(l.line.reason));
+    }
+    return polylines_grid(lines, {used, stop});
+}
+
 // Tets labelled by block, and the separatrix sheets.
 VtkGrid blocks_grid(const TetMesh& m, const BlockDecomposition& b) {
     VtkGrid g;
@@ -163,6 +175,10 @@ std::vector<std::string> write_outputs(const RunResult& r, const std::string& di
         if (correction->mapped) {
             write_vtk(curves_grid(*correction->mapped), path("mapped_curves.vtk"), "FrameFix corrected curves mapped onto the original part");
             written.push_back(path("mapped_curves.vtk"));
+        }
+        if (correction->method.rfind("extrude", 0) == 0) {
+            write_vtk(streamlines_grid(correction->extrusion), path("streamlines.vtk"), "FrameFix extrusion streamlines");
+            written.push_back(path("streamlines.vtk"));
         }
         if (correction->filleted)
             for (const char* name : {"filleted.brep", "filleted.step"}) {

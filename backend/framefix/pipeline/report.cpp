@@ -67,6 +67,22 @@ void add_features(json& j, const MeshStage& m) {
     j["feature_curves"] = curves;
 }
 
+// The extrusions' streamlines (start, end, length, points, stop reason, used) and failures.
+json extrusion_json(const Correction& c) {
+    json lines = json::array(), failures = json::array();
+    for (const ExtrusionStreamline& l : c.extrusion.streamlines) {
+        const Points& p = l.line.points;
+        json one = {{"source", l.source}, {"start", point(p.row(0).transpose())}, {"end", point(p.row(p.rows() - 1).transpose())},
+                    {"length", l.line.length}, {"points", p.rows()}, {"stop", to_string(l.line.reason)}, {"used", l.used}};
+        if (!l.used) one["failure"] = l.failure;
+        lines.push_back(one);
+    }
+    for (const ExtrusionFailure& f : c.extrusion.failures) failures.push_back({{"what", f.what}, {"why", f.why}});
+    return {{"streamlines", lines}, {"failures", failures}, {"extruded_edges", c.extrusion.edges},
+            {"inserted_points", c.extrusion.points.rows()}, {"constrained_points", c.constrained_points},
+            {"extrusion_seconds", c.extrusion_seconds}};
+}
+
 json correction_json(const Correction& c, const SingularitySummary& after) {
     json paths = json::array();
     for (const auto& p : c.snap.paths) {
@@ -81,7 +97,7 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
         if (!f.done) one["reason"] = f.reason;
         fillets.push_back(one);
     }
-    return {{"method", c.method},
+    json j = {{"method", c.method},
             {"fillets", fillets},
             {"notes", c.notes},
             {"remeshed", c.remeshed},
@@ -102,6 +118,8 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"seconds", c.seconds},
             {"snapped_paths", paths},
             {"curves_before", singularities_json(c.graph_before)["curves"]}};
+    if (c.method.rfind("extrude", 0) == 0) j.update(extrusion_json(c));
+    return j;
 }
 
 json blocks_json(const BlockDecomposition& b) {

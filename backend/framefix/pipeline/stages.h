@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "framefix/brep/fillet.h"
+#include "framefix/corrections/extrusion.h"
 #include "framefix/corrections/snapping.h"
 #include "framefix/frame_field/frame_field.h"
 #include "framefix/mesh/features.h"
@@ -49,6 +50,11 @@ struct Correction {
     std::vector<std::string> notes;
     std::string fillet_how;
     std::shared_ptr<const BrepModel> filleted;
+    // Filled by methods "extrude-curves" and "extrude-nodes": the streamlines, what failed, and the
+    // points inserted into the new mesh (constrained_points of them carry the internal constraint).
+    ExtrusionPlan extrusion;
+    int constrained_points = 0;
+    double extrusion_seconds = 0;   // tracing + remeshing with the points
     bool remeshed = false;          // the mesh was replaced (field_before lives on the old one)
     std::optional<SingularityGraph> mapped;  // fillet: the corrected graph on the original part
     int mapped_points = 0, mapped_nodes = 0;  // fillet: curve points and nodes moved onto the concave edges

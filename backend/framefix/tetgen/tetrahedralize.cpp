@@ -127,17 +127,29 @@ void injected_fault(bool keep_boundary) {
     if (keep_boundary && fault && std::string(fault) == "tetgen-keep-boundary") std::raise(SIGSEGV);
 }
 
+// TetGen's -i list: points it inserts into the mesh (it skips those outside the solid).
+void fill_inserted(const Points& inserted, tetgenio& addin) {
+    addin.firstnumber = 0;
+    addin.numberofpoints = int(inserted.rows());
+    addin.pointlist = new REAL[size_t(addin.numberofpoints) * 3];
+    for (int i = 0; i < addin.numberofpoints; ++i)
+        for (int k = 0; k < 3; ++k) addin.pointlist[3 * i + k] = inserted(i, k);
+}
+
 // In the worker: status byte, then the mesh's bytes or the failure's message.
-std::string run_tetgen(const SurfaceMesh& surface, double h, bool keep_boundary) {
-    tetgenio in, out;
+std::string run_tetgen(const SurfaceMesh& surface, double h, bool keep_boundary, const Points& inserted) {
+    tetgenio in, out, addin;
     fill_input(surface, in);
+    const bool insert = inserted.rows() > 0;
+    if (insert) fill_inserted(inserted, addin);
     std::optional<Failure> failure = check_self_intersections(in);
     if (!failure) {
         injected_fault(keep_boundary);
         char switches[128];
-        std::snprintf(switches, sizeof switches, "p%sq1.3/15a%.17gzeQ", keep_boundary ? "Y" : "", kVolumeFactor * h * h * h);
+        std::snprintf(switches, sizeof switches, "p%s%sq1.3/15a%.17gzeQ", keep_boundary ? "Y" : "", insert ? "i" : "",
+                      kVolumeFactor * h * h * h);
         try {
-            ::tetrahedralize(switches, &in, &out);
+            ::tetrahedralize(switches, &in, &out, insert ? &addin : nullptr);
         } catch (int code) {
             failure = tetgen_failure(code);
         } catch (const std::bad_alloc&) {
@@ -152,7 +164,8 @@ std::string run_tetgen(const SurfaceMesh& surface, double h, bool keep_boundary)
 
 }  // namespace
 
-TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary) {
+TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary,
+                             const Points& inserted) {
     if (surface.triangles.rows() < 4) throw Error("mesh", "the surface has " + std::to_string(surface.triangles.rows()) +
                                                               " triangles; a closed surface needs at least 4");
     const double volume = enclosed_volume(surface);
@@ -166,7 +179,7 @@ TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& opti
     TetgenRun run;
     std::string bytes;
     try {
-        bytes = run_isolated(task, [&] { return run_tetgen(surface, h, keep_boundary); });
+        bytes = run_isolated(task, [&] { return run_tetgen(surface, h, keep_boundary, inserted); });
     } catch (const Error& e) {
         run.status = TetgenStatus::crashed;
         run.message = e.message();
@@ -182,8 +195,8 @@ TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& opti
     return run;
 }
 
-TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options) {
-    TetgenRun run = try_tetrahedralize(surface, options, true);
+TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, const Points& inserted) {
+    TetgenRun run = try_tetrahedralize(surface, options, true, inserted);
     if (run.status == TetgenStatus::failed) throw Error("mesh", run.message);
     if (run.status != TetgenStatus::meshed) throw Error("mesh", run.message + "; try a slightly different --size");
     return std::move(run.mesh);

@@ -12,7 +12,9 @@ namespace framefix {
 // keep their face tags, feature segments their edge tags (split where TetGen refines them),
 // corner points stay mesh vertices. Refuses (framefix::Error, stage "mesh") sizes whose memory
 // estimate exceeds the limit, and reports TetGen failures (self-intersecting boundary, ...).
-TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options);
+// `inserted` points become mesh vertices too (TetGen -i; points outside the solid are skipped),
+// after the surface's points; find them by position, TetGen may drop near-duplicates.
+TetMesh tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, const Points& inserted = Points());
 
 // How one TetGen run ended, for callers that try again another way (pipeline/mesh_attempts.h).
 enum class TetgenStatus : char {
@@ -31,6 +33,7 @@ struct TetgenRun {
 // tetrahedralize() without throwing for TetGen's failures (bad options still throw).
 // keep_boundary = false lets TetGen split boundary triangles and segments (no -Y); the pieces keep
 // their face and edge tags.
-TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary);
+TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary,
+                             const Points& inserted = Points());
 
 }  // namespace framefix
