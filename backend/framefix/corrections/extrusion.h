@@ -29,6 +29,13 @@ struct ExtrusionOptions {
     // their seed spacing split the sheet (the paper's curved box): the sheet is not used.
     double split_gap_h = 3;
     double split_ratio = 4;
+    // Node extrusion: free vertices within tube_radius_h h of a streamline get the frames of a
+    // singular curve of its valence (the cross turns by +-theta/4 about it); a line of singular
+    // frames alone is too thin to force a singularity (a line has no capacity in 3D). Vertices
+    // closer than core_radius_h h get the singular frame itself.
+    double tube_radius_h = 1.2;
+    double core_radius_h = 0.25;
+    double ring_radius_h = 0.5;  // node extrusion: radius of the refining rings (h); 0 = none
     int threads = 0;             // OpenMP threads for the tracing, 0 = all
 };
 
@@ -37,6 +44,13 @@ struct ExtrusionStreamline {
     Streamline line;             // points, stop reason, length
     bool used = false;           // its points constrain the field
     std::string failure;         // why it is not used; empty when used
+    // Node extrusion: the valence forced along it (that of the 3-5 curve at its start) and the
+    // frame axis normal to it at the start (the phase of the forced winding).
+    int valence = 0;
+    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+    // Node extrusion, per point: the phase (radians) of the winding about the reference axis
+    // carried along, fitted to the initial field where it already winds and spread from there.
+    std::vector<double> phase;
 };
 
 struct ExtrusionFailure {
@@ -50,6 +64,9 @@ struct ExtrusionPlan {
     Points points;               // #I x 3 points to insert, model units
     Points axes;                 // #I x 3 unit: the sheet's normal (curves) or the singular axis (nodes)
     bool singular = false;       // nodes: the points get singular frames, else tangency to the sheet
+    // Nodes: rings around the streamlines, inserted to refine the mesh there (their frames
+    // come from the tube constraint).
+    Points ring_points;
     std::vector<int> edges;      // curves: the B-rep edges extruded
     double seconds = 0;
 };
@@ -65,8 +82,9 @@ ExtrusionPlan plan_node_extrusion(const TetMesh& mesh, const TetTopology& topo, 
                                   const SingularityGraph& graph, const ExtrusionOptions& options = {});
 
 // `constraints` (the boundary conditions of `mesh`, remeshed with plan.points inserted) plus the
-// plan's internal constraint at each free vertex found at an inserted point. Returns how many
-// points were constrained.
-int add_internal_constraints(const TetMesh& mesh, const ExtrusionPlan& plan, Constraints& constraints);
+// plan's internal constraint at each free vertex found at an inserted point, and for node
+// extrusion the tube around its streamlines. Returns how many vertices were constrained.
+int add_internal_constraints(const TetMesh& mesh, const ExtrusionPlan& plan, Constraints& constraints,
+                             const ExtrusionOptions& options = {});
 
 }  // namespace framefix

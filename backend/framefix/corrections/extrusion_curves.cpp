@@ -16,6 +16,8 @@ using detail::Candidates;
 using detail::along;
 
 constexpr double kConcaveFromDeg = 225; // valence-3 class starts here (round(theta / 90 deg) = 3)
+constexpr double kOffSheet = 0.5;       // |cos| between a gap and the sheet normal: the gap leaves the sheet
+constexpr double kSameNormal = 0.87;    // |cos| of 30 deg: sheet normals further apart are another sheet
 
 bool extrudable(const EdgeFeature& e) {
     return e.valence == 2 || e.valence == 3 || e.valence == 4 || (e.valence_varies && e.angle_max_deg >= kConcaveFromDeg);
@@ -48,25 +50,31 @@ std::vector<int> edges_near_three_five(const TetMesh& mesh, const FeatureSet& fe
     return out;
 }
 
-// Largest distance from a point of `a` to the nearest point of `b` (one-sided Hausdorff).
-double gap(const Points& a, const Points& b) {
-    double g = 0;
-    for (Eigen::Index i = 0; i < a.rows(); ++i) {
-        double d = 1e300;
-        for (Eigen::Index j = 0; j < b.rows(); ++j) d = std::min(d, (a.row(i) - b.row(j)).squaredNorm());
-        g = std::max(g, d);
+// Whether streamline b leaves the sheet of streamline a: a point of a whose nearest point of b
+// is further than `limit` and off a's sheet plane (normal t x v), or whose sheet normals differ.
+// Streamlines that drift apart within one plane (the notch's floor, sheared at a diagonal) do
+// not split the sheet: the paper's "parts that stay inside a future valid sheet".
+bool leaves_sheet(const Points& a, const Eigen::Vector3d& ta, const Points& b, const Eigen::Vector3d& tb, double limit) {
+    for (Eigen::Index i = 1; i < a.rows(); ++i) {
+        Eigen::Index best = 0;
+        for (Eigen::Index j = 1; j < b.rows(); ++j)
+            if ((a.row(i) - b.row(j)).squaredNorm() < (a.row(i) - b.row(best)).squaredNorm()) best = j;
+        const Eigen::Vector3d sep = (b.row(best) - a.row(i)).transpose();
+        if (sep.norm() <= limit) continue;
+        const Eigen::Vector3d na = ta.cross(along(a, i)).normalized(), nb = tb.cross(along(b, best)).normalized();
+        if (std::abs(sep.normalized().dot(na)) > kOffSheet || std::abs(na.dot(nb)) < kSameNormal) return true;
     }
-    return std::sqrt(g);
+    return false;
 }
 
-// Streamlines of one sheet in seed order: the first pair of neighbours that drift apart, or -1.
-int split_at(const std::vector<ExtrusionStreamline>& lines, const std::vector<Eigen::Vector3d>& seeds, double h,
-             const ExtrusionOptions& o) {
+// Streamlines of one sheet in seed order: the first pair of neighbours that split it, or -1.
+int split_at(const std::vector<ExtrusionStreamline>& lines, const std::vector<Eigen::Vector3d>& seeds,
+             const std::vector<Eigen::Vector3d>& tangents, double h, const ExtrusionOptions& o) {
     for (size_t i = 0; i + 1 < lines.size(); ++i) {
         if (!lines[i].used || !lines[i + 1].used) continue;
-        const double spacing = (seeds[i + 1] - seeds[i]).norm();
-        const double limit = std::max(o.split_gap_h * h, o.split_ratio * spacing);
-        if (std::max(gap(lines[i].line.points, lines[i + 1].line.points), gap(lines[i + 1].line.points, lines[i].line.points)) > limit)
+        const double limit = std::max(o.split_gap_h * h, o.split_ratio * (seeds[i + 1] - seeds[i]).norm());
+        const Points &a = lines[i].line.points, &b = lines[i + 1].line.points;
+        if (leaves_sheet(a, tangents[i], b, tangents[i + 1], limit) || leaves_sheet(b, tangents[i + 1], a, tangents[i], limit))
             return int(i);
     }
     return -1;
@@ -94,11 +102,11 @@ void extrude_sheet(const TetMesh& mesh, const FrameField& field, const TetLocato
     if (seeds.empty()) return;
     const std::string name = "Edge" + std::to_string(curve.edge) + " sheet " + std::to_string(k + 1);
     std::vector<ExtrusionStreamline> lines = detail::trace(mesh, field, locator, seeds, dirs, to, name);
-    const int split = split_at(lines, seeds, h, o);
+    const int split = split_at(lines, seeds, tangents, h, o);
     if (split >= 0) {
         for (auto& l : lines) l.used = false, l.failure = "belongs to a split sheet";
         plan.failures.push_back({name, "neighbouring streamlines " + std::to_string(split) + " and " + std::to_string(split + 1) +
-                                           " drift apart: another singularity splits the sheet, which is not used"});
+                                           " drift apart out of the sheet: another singularity splits it, so it is not used"});
     } else if (std::any_of(lines.begin(), lines.end(), [](const auto& l) { return !l.used; })) {
         plan.failures.push_back({name, failure_counts(lines) + "; those are not used"});
     }

@@ -59,6 +59,14 @@ bool apply_fillet(CorrectionContext& c) {
     return true;
 }
 
+ExtrusionOptions extrusion_options(const RunOptions& o) {
+    ExtrusionOptions e;
+    e.threads = o.threads;
+    if (getenv("FF_TUBE")) e.tube_radius_h = atof(getenv("FF_TUBE"));  // TEMP experiment
+    if (getenv("FF_CORE")) e.core_radius_h = atof(getenv("FF_CORE"));  // TEMP experiment
+    return e;
+}
+
 // Both extrusions: the planned points are inserted into a new mesh of the same boundary, which
 // carries the internal constraints. A TetGen failure is a reported failure, not an error.
 bool apply_extrusion(CorrectionContext& c, ExtrusionPlan plan) {
@@ -68,26 +76,25 @@ bool apply_extrusion(CorrectionContext& c, ExtrusionPlan plan) {
     if (p.points.rows() == 0) return false;
     MeshOptions mo = c.options.mesh;
     mo.size = c.mesh.tets.size;
-    TetMesh tets;
-    try {
-        tets = tetrahedralize(boundary_surface(c.mesh.tets).surface, mo, p.points);
-    } catch (const Error& e) {
-        p.failures.push_back({"mesh", "TetGen could not insert the streamline points: " + e.message()});
+    Points all(p.points.rows() + p.ring_points.rows(), 3);
+    all << p.points, p.ring_points;
+    // TetGen's boundary recovery can crash with points near the boundary: then let it split
+    // boundary triangles (the pieces keep their tags) as the first meshing does.
+    const SurfaceMesh surface = boundary_surface(c.mesh.tets).surface;
+    TetgenRun run = try_tetrahedralize(surface, mo, true, all);
+    if (run.status != TetgenStatus::meshed) run = try_tetrahedralize(surface, mo, false, all);
+    if (run.status != TetgenStatus::meshed) {
+        p.failures.push_back({"mesh", "TetGen could not insert the streamline points: " + run.message});
         return false;
     }
+    TetMesh tets = std::move(run.mesh);
     c.mesh.tets = std::move(tets);
     c.mesh.topology = build_topology(c.mesh.tets);
     c.field.constraints = boundary_constraints(c.mesh.tets, c.mesh.features);
-    c.record.constrained_points = add_internal_constraints(c.mesh.tets, p, c.field.constraints);
+    c.record.constrained_points = add_internal_constraints(c.mesh.tets, p, c.field.constraints, extrusion_options(c.options));
     c.record.remeshed = true;
     c.record.extrusion_seconds = p.seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return c.record.constrained_points > 0;
-}
-
-ExtrusionOptions extrusion_options(const RunOptions& o) {
-    ExtrusionOptions e;
-    e.threads = o.threads;
-    return e;
 }
 
 bool apply_extrude_curves(CorrectionContext& c) {

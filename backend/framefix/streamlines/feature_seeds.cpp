@@ -43,8 +43,10 @@ FaceNormals face_normals(const TetMesh& mesh) {
         const int tag = mesh.face_tags[b];
         for (int k = 0; k < 3; ++k) {
             const PairKey key = pair_key(t[k], tag, kAnyIdStride);
-            f.normal[key] += n;
-            f.side[key] += c - mesh.points.row(t[k]).transpose();
+            const Eigen::Vector3d side = c - mesh.points.row(t[k]).transpose();
+            // Eigen vectors are not zeroed by default: insert the first value, then add.
+            if (auto [it, fresh] = f.normal.try_emplace(key, n); !fresh) it->second += n;
+            if (auto [it, fresh] = f.side.try_emplace(key, side); !fresh) it->second += side;
             f.edge_faces[edge_key(t[k], t[(k + 1) % 3], nv)].push_back(tag);
         }
     }
