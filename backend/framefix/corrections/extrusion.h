@@ -67,6 +67,7 @@ struct ExtrusionPlan {
     // Nodes: rings around the streamlines, inserted to refine the mesh there (their frames
     // come from the tube constraint).
     Points ring_points;
+    bool refine_boundary = false;  // nodes: TetGen may split boundary triangles (no -Y) near the forced ends
     std::vector<int> edges;      // curves: the B-rep edges extruded
     double seconds = 0;
 };

@@ -9,6 +9,7 @@
 #include "framefix/corrections/boundary_distance.h"
 #include "framefix/corrections/extrusion.h"
 #include "framefix/corrections/extrusion_trace.h"
+#include "framefix/corrections/extrusion_winding.h"
 #include "framefix/frame_field/projection.h"
 #include "framefix/streamlines/point_grid.h"
 
@@ -74,40 +75,10 @@ std::vector<Start> starts(const SingularityGraph& g, const TetLocator& locator, 
     return out;
 }
 
-// Unit axes normal to the streamline at each of its points, carried from `reference` by
-// projection (parallel transport without twist).
-std::vector<Eigen::Vector3d> transported(const Points& p, const Eigen::Vector3d& reference) {
-    std::vector<Eigen::Vector3d> e(size_t(p.rows()));
-    Eigen::Vector3d cur = reference;
-    for (Eigen::Index j = 0; j < p.rows(); ++j) {
-        const Eigen::Vector3d d = detail::along(p, j);
-        const Eigen::Vector3d q = cur - cur.dot(d) * d;
-        cur = q.norm() > 1e-9 ? Eigen::Vector3d(q.normalized()) : cur;
-        e[size_t(j)] = cur;
-    }
-    return e;
-}
-
-double winding_sign(int valence) { return valence == 5 ? -1.0 : 1.0; }  // index +1/4 (valence 3) or -1/4
-
-// The frame at x of a singular curve of valence k along the streamline point (p, d, e1): the
-// cross about d turned by phase + theta/4 (valence 3) or phase - theta/4 (valence 5).
-Eigen::Matrix3d winding_frame(const Eigen::Vector3d& x, const Eigen::Vector3d& p, const Eigen::Vector3d& d,
-                              const Eigen::Vector3d& e1_in, int valence, double phase) {
-    const Eigen::Vector3d e1 = (e1_in - e1_in.dot(d) * d).normalized(), e2 = d.cross(e1);
-    const Eigen::Vector3d r = x - p - (x - p).dot(d) * d;
-    const double phi = phase + 0.25 * winding_sign(valence) * std::atan2(r.dot(e2), r.dot(e1));
-    const Eigen::Vector3d a1 = std::cos(phi) * e1 + std::sin(phi) * e2;
-    Eigen::Matrix3d R;
-    R << a1, d.cross(a1), d;
-    return R;
-}
-
-// 4 x (angle of the initial frame's cross about d at x, from e1) - s theta, as a unit complex
-// number weighted by how well d is a frame axis there; zero outside the mesh.
-std::complex<double> phase_sample(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
-                                  const Eigen::Vector3d& x, const Eigen::Vector3d& d, const Eigen::Vector3d& e1,
-                                  double s_theta) {
+// The initial field's cross about d at x, as exp(4 i psi) with psi measured from e1, weighted by
+// how well d is a frame axis there; zero outside the mesh.
+std::complex<double> initial_cross(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
+                                   const Eigen::Vector3d& x, const Eigen::Vector3d& d, const Eigen::Vector3d& e1) {
     const TetLocation at = locator.locate(x);
     if (at.tet < 0) return 0;
     const Eigen::Vector4d w = at.bary.cwiseMax(0.0) / std::max(at.bary.cwiseMax(0.0).sum(), 1e-300);
@@ -118,35 +89,40 @@ std::complex<double> phase_sample(const TetMesh& mesh, const FrameField& field, 
     Eigen::Vector3d a = Eigen::Vector3d::Zero();
     for (int k = 0; k < 3; ++k)
         if (std::abs(f.rotation.col(k).dot(along_d)) < 0.5) a = f.rotation.col(k);
-    const double psi = std::atan2(a.dot(d.cross(e1)), a.dot(e1));
-    return std::abs(along_d.dot(d)) * std::polar(1.0, 4 * psi - s_theta);
+    return std::abs(along_d.dot(d)) * std::polar(1.0, 4 * std::atan2(a.dot(d.cross(e1)), a.dot(e1)));
 }
 
-// The winding phase per streamline point: fitted on a ring of radius 1 h in the initial field,
-// then spread along the line (exponential smoothing both ways) so that the stretches where the
-// field does not wind yet take the phase of those where it does.
-std::vector<double> fit_phase(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
-                              const ExtrusionStreamline& l, double h) {
-    constexpr int kRing = 8;
-    constexpr double kKeep = 0.8;  // share of the neighbour's sum carried to the next point
-    const Points& p = l.line.points;
-    const std::vector<Eigen::Vector3d> e1 = transported(p, l.reference);
-    const Eigen::Index n = p.rows();
-    const size_t m = size_t(n);
-    std::vector<std::complex<double>> z(m), fwd(m), bwd(m);
-    for (Eigen::Index j = 0; j < n; ++j) {
-        const Eigen::Vector3d d = detail::along(p, j), b = d.cross(e1[size_t(j)]);
-        for (int r = 0; r < kRing; ++r) {
-            const double t = 2 * M_PI * r / kRing;
-            const Eigen::Vector3d x = p.row(j).transpose() + h * (std::cos(t) * e1[size_t(j)] + std::sin(t) * b);
-            z[size_t(j)] += phase_sample(mesh, field, locator, x, d, e1[size_t(j)], winding_sign(l.valence) * t);
+// The phase of each forced curve, per point: the turn c such that c + Winding::angle matches the
+// initial field on rings of 2 h and 3 h about the point (away from every forced curve, where the
+// forced field and the initial one should agree), spread along the curve by exponential
+// smoothing both ways so that stretches with no good fit take their neighbours' phase.
+void fit_phases(const TetMesh& mesh, const FrameField& field, const TetLocator& locator, double h,
+                std::vector<ExtrusionStreamline>& lines) {
+    constexpr int kRing = 12;
+    constexpr double kKeep = 0.8;       // share of the neighbour's sum carried to the next point
+    constexpr double kClear = 1.2;      // samples this close (h) to a forced curve are skipped
+    const detail::Winding winding(lines, h);
+    for (size_t i = 0; i < lines.size(); ++i) {
+        ExtrusionStreamline& l = lines[i];
+        if (!l.used || (l.valence != 3 && l.valence != 5)) continue;
+        const Points& p = l.line.points;
+        const size_t m = size_t(p.rows());
+        std::vector<std::complex<double>> z(m), fwd(m), bwd(m);
+        for (size_t j = 0; j < m; ++j) {
+            const Eigen::Vector3d d = detail::along(p, Eigen::Index(j)), e1 = winding.e1(i, Eigen::Index(j)), e2 = d.cross(e1);
+            for (double radius : {2.0, 3.0})
+                for (int r = 0; r < kRing; ++r) {
+                    const double t = 2 * M_PI * r / kRing;
+                    const Eigen::Vector3d x = p.row(Eigen::Index(j)).transpose() + radius * h * (std::cos(t) * e1 + std::sin(t) * e2);
+                    if (winding.nearest(x, kClear * h) >= 0) continue;
+                    z[j] += initial_cross(mesh, field, locator, x, d, e1) * std::polar(1.0, -4 * winding.angle(x, d));
+                }
         }
+        for (size_t j = 0; j < m; ++j) fwd[j] = z[j] + (j ? kKeep * fwd[j - 1] : std::complex<double>());
+        for (size_t j = m; j-- > 0;) bwd[j] = z[j] + (j + 1 < m ? kKeep * bwd[j + 1] : std::complex<double>());
+        l.phase.assign(m, 0.0);
+        for (size_t j = 0; j < m; ++j) l.phase[j] = std::arg(fwd[j] + bwd[j] - z[j]) / 4;
     }
-    for (Eigen::Index j = 0; j < n; ++j) fwd[size_t(j)] = z[size_t(j)] + (j ? kKeep * fwd[size_t(j - 1)] : std::complex<double>());
-    for (Eigen::Index j = n - 1; j >= 0; --j) bwd[size_t(j)] = z[size_t(j)] + (j + 1 < n ? kKeep * bwd[size_t(j + 1)] : std::complex<double>());
-    std::vector<double> phase(m);
-    for (size_t j = 0; j < m; ++j) phase[j] = std::arg(fwd[j] + bwd[j] - z[j]) / 4;
-    return phase;
 }
 
 // kRingPoints points on a circle of radius r h about each inserted point, normal to its axis,
@@ -185,72 +161,52 @@ ExtrusionPlan plan_node_extrusion(const TetMesh& mesh, const TetTopology& topo, 
         for (ExtrusionStreamline& l : detail::trace(mesh, field, locator, {s.point}, {s.direction}, to, name)) {
             l.valence = s.valence;
             l.reference = s.direction.unitOrthogonal();
-            if (l.used) l.phase = fit_phase(mesh, field, locator, l, h);
             if (!l.used) plan.failures.push_back({name, "the streamline " + l.failure + "; it is not used"});
             for (Eigen::Index j = 1; l.used && j < l.line.points.rows(); ++j)
                 cand.points.push_back(l.line.points.row(j).transpose()), cand.axes.push_back(detail::along(l.line.points, j));
             plan.streamlines.push_back(std::move(l));
         }
     }
+    fit_phases(mesh, field, locator, h, plan.streamlines);
     cand.select(mesh, h, o, plan);
-    if (getenv("FF_RING")) plan.ring_points = rings(plan, mesh, h, atof(getenv("FF_RING")));  // TEMP
+    if (o.ring_radius_h > 0) plan.ring_points = rings(plan, mesh, h, o.ring_radius_h);
+    plan.refine_boundary = true;
     plan.seconds = detail::since(t0);
     return plan;
 }
 
 namespace {
 
-// Node extrusion: free vertices near a used streamline get its winding frames (or, on its core,
-// the singular frame). Returns how many.
+// Node extrusion: vertices near a forced curve (free ones, and boundary ones it meets head-on)
+// get the frames of the forced field (or, on its core, the singular frame). Returns how many.
 int constrain_tubes(const TetMesh& mesh, const ExtrusionPlan& plan, Constraints& cons, const ExtrusionOptions& o) {
-    struct At { size_t line; Eigen::Index j; };
-    std::vector<At> at;
-    std::vector<std::vector<Eigen::Vector3d>> e1(plan.streamlines.size());
-    std::vector<Eigen::Vector3d> pts;
-    for (size_t i = 0; i < plan.streamlines.size(); ++i) {
-        const ExtrusionStreamline& l = plan.streamlines[i];
-        if (!l.used || (l.valence != 3 && l.valence != 5)) continue;
-        e1[i] = transported(l.line.points, l.reference);
-        for (Eigen::Index j = 0; j < l.line.points.rows(); ++j) at.push_back({i, j}), pts.push_back(l.line.points.row(j).transpose());
-    }
-    if (pts.empty()) return 0;
-    Points all(Eigen::Index(pts.size()), 3);
-    for (size_t k = 0; k < pts.size(); ++k) all.row(Eigen::Index(k)) = pts[k].transpose();
     const double h = std::max(mesh.size, 1e-12);
-    const PointGrid grid(all, h);
+    const detail::Winding winding(plan.streamlines, h);
+    if (winding.empty()) return 0;
     int n = 0;
     for (int v = 0; v < mesh.num_vertices(); ++v) {
         const ConstraintKind kind = cons.kind[size_t(v)];
         if (kind == ConstraintKind::Fixed) continue;
         const Eigen::Vector3d x = mesh.points.row(v).transpose();
-        const int k = grid.nearest(x, o.tube_radius_h * h);
+        const int k = winding.nearest(x, o.tube_radius_h * h);
         if (k < 0) continue;
-        const ExtrusionStreamline& l = plan.streamlines[at[size_t(k)].line];
-        const Eigen::Index j = at[size_t(k)].j;
+        const ExtrusionStreamline& l = plan.streamlines[winding.line(k)];
+        const Eigen::Index j = winding.index(k);
         Eigen::Vector3d d = detail::along(l.line.points, j);
-        // Where the streamline meets the boundary head-on, the surface singularity is forced too.
-        if (kind == ConstraintKind::NormalAligned) {
-            const Eigen::Vector3d n = cons.normal.row(v).transpose();
-            if (std::abs(n.dot(d)) < kHeadOn) continue;
-            d = n.dot(d) > 0 ? n : Eigen::Vector3d(-n);
+        if (kind == ConstraintKind::NormalAligned) {  // the surface singularity where it ends is forced too
+            const Eigen::Vector3d nrm = cons.normal.row(v).transpose();
+            if (std::abs(nrm.dot(d)) < kHeadOn) continue;
+            d = nrm.dot(d) > 0 ? nrm : Eigen::Vector3d(-nrm);
         }
-        {  // TEMP experiment: skip near the ends
-            double skip = getenv("FF_SKIP") ? atof(getenv("FF_SKIP")) : 0;
-            double s0 = 0, s1 = 0;
-            for (Eigen::Index q = 1; q <= j; ++q) s0 += (l.line.points.row(q) - l.line.points.row(q - 1)).norm();
-            s1 = l.line.length - s0;
-            if (std::min(s0, s1) < skip * h) continue;
-        }
-        const Eigen::Vector3d p = pts[size_t(k)];
-        const Eigen::Vector3d r = x - p - (x - p).dot(d) * d;
+        const Eigen::Vector3d r = x - winding.point(k) - (x - winding.point(k)).dot(d) * d;
         if (r.norm() < o.core_radius_h * h) {
             set_singular(cons, v, d);
         } else {
+            const double angle = l.phase[size_t(j)] + winding.angle(x, d);
             cons.kind[size_t(v)] = ConstraintKind::Fixed;
-            cons.fixed.row(v) = frame_from_rotation(winding_frame(x, p, d, e1[at[size_t(k)].line][size_t(j)], l.valence, l.phase[size_t(j)])).transpose();
+            cons.fixed.row(v) = frame_from_rotation(detail::turned_frame(d, winding.e1(winding.line(k), j), angle)).transpose();
         }
         ++n;
-        if (getenv("FF_DEBUG")) fprintf(stderr, "tube line %zu z %.3f kind %d r %.3f\n", at[size_t(k)].line, x.z(), int(kind), r.norm() / h);
     }
     return n;
 }

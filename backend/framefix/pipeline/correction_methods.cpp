@@ -62,8 +62,6 @@ bool apply_fillet(CorrectionContext& c) {
 ExtrusionOptions extrusion_options(const RunOptions& o) {
     ExtrusionOptions e;
     e.threads = o.threads;
-    if (getenv("FF_TUBE")) e.tube_radius_h = atof(getenv("FF_TUBE"));  // TEMP experiment
-    if (getenv("FF_CORE")) e.core_radius_h = atof(getenv("FF_CORE"));  // TEMP experiment
     return e;
 }
 
@@ -79,10 +77,11 @@ bool apply_extrusion(CorrectionContext& c, ExtrusionPlan plan) {
     Points all(p.points.rows() + p.ring_points.rows(), 3);
     all << p.points, p.ring_points;
     // TetGen's boundary recovery can crash with points near the boundary: then let it split
-    // boundary triangles (the pieces keep their tags) as the first meshing does.
+    // boundary triangles (the pieces keep their tags) as the first meshing does. Node extrusion
+    // lets it from the start: the forced curves' ends on the boundary need the finer triangles.
     const SurfaceMesh surface = boundary_surface(c.mesh.tets).surface;
-    TetgenRun run = try_tetrahedralize(surface, mo, true, all);
-    if (run.status != TetgenStatus::meshed) run = try_tetrahedralize(surface, mo, false, all);
+    TetgenRun run = try_tetrahedralize(surface, mo, !p.refine_boundary, all);
+    if (run.status != TetgenStatus::meshed && !p.refine_boundary) run = try_tetrahedralize(surface, mo, false, all);
     if (run.status != TetgenStatus::meshed) {
         p.failures.push_back({"mesh", "TetGen could not insert the streamline points: " + run.message});
         return false;
