@@ -64,7 +64,28 @@ void bind_correction(py::module_& m) {
         .def_readonly("remeshed", &Correction::remeshed, "the run's mesh is the filleted solid's")
         .def_property_readonly("filleted_brep", [](const Correction& c) {
             return c.filleted ? py::object(py::str(to_brep_string(*c.filleted))) : py::object(py::none());
-        }, "method fillet: the filleted solid as BREP text (Part.Shape().importBrepFromString), else None");
+        }, "method fillet: the filleted solid as BREP text (Part.Shape().importBrepFromString), else None")
+        .def_property_readonly("streamlines", [](const Correction& c) {
+            py::list out;
+            for (const ExtrusionStreamline& l : c.extrusion.streamlines) {
+                py::dict d;
+                d["source"] = l.source;
+                d["points"] = l.line.points;
+                d["length"] = l.line.length;
+                d["stop"] = to_string(l.line.reason);
+                d["used"] = l.used;
+                d["failure"] = l.failure;
+                out.append(d);
+            }
+            return out;
+        }, "methods extrude-*: one dict per streamline (source, points, length, stop, used, failure)")
+        .def_property_readonly("failures", [](const Correction& c) {
+            py::list out;
+            for (const ExtrusionFailure& f : c.extrusion.failures) out.append(py::dict(py::arg("what") = f.what, py::arg("why") = f.why));
+            return out;
+        }, "methods extrude-*: what failed and why (a failure is a result, not an error)")
+        .def_readonly("constrained_points", &Correction::constrained_points,
+                      "methods extrude-*: vertices of the new mesh carrying an internal constraint");
 }
 
 void bind_blocks(py::module_& m) {

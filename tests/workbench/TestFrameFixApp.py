@@ -177,6 +177,23 @@ class Correction(unittest.TestCase):
         self.assertEqual(len(filleted[0].Shape.Faces), faces + 1)
 
 
+    def test_extrusions_show_their_streamlines_inside_the_part(self):
+        """Both extrusions remove the notch's 3-5 curve; the streamlines they traced are shown
+        (used ones and failed ones told apart by their edge code) and lie in the part."""
+        part = self.part
+        volume = part.Shape.Volume
+        for method in ("extrude-curves", "extrude-nodes"):
+            curves = analysis.make_analysis(part, method=method)
+            self.assertEqual((curves.Before35, curves.Curves35), (1, 0), method)
+            lines = [o for o in curves.getParentGroup().Group if o.Name.startswith("Streamlines")]
+            self.assertEqual(len(lines), 1, method)
+            self.assertGreater(len(lines[0].Shape.Edges), 10, method)
+            box = part.Shape.BoundBox
+            box.enlarge(1e-6)
+            self.assertTrue(box.isInside(lines[0].Shape.BoundBox), method)
+        self.assertEqual(part.Shape.Volume, volume)
+
+
 class MovedPart(unittest.TestCase):
     def test_moving_the_part_reruns_and_keeps_one_3_5_curve(self):
         doc = FreeCAD.newDocument("FrameFixMoved")
@@ -226,14 +243,15 @@ class BackendInfo(unittest.TestCase):
         from framefix_wb import runs
         info = runs.backend_info()
         methods = {m["name"]: m["available"] for m in info["correction_methods"]}
-        self.assertEqual(methods, {"snap": True, "fillet": True, "extrude-curves": False,
-                                   "extrude-nodes": False})
-        self.assertEqual(info["block_methods"], ["snap", "fillet", "none"])
+        self.assertEqual(methods, {"snap": True, "fillet": True, "extrude-curves": True,
+                                   "extrude-nodes": True})
+        self.assertEqual(info["block_methods"], ["snap", "fillet", "extrude-curves", "extrude-nodes", "none"])
         self.assertEqual(info["default_target_tets"], 50000)
 
-    def test_an_unavailable_method_is_refused_before_a_run(self):
+    def test_an_unknown_method_is_refused_before_a_run(self):
         from framefix_wb import runs
         from framefix_wb.errors import FrameFixError
         with self.assertRaises(FrameFixError) as e:
-            runs.check_method("extrude-curves")
-        self.assertIn("extrude-curves", str(e.exception))
+            runs.check_method("extrude-sheets")
+        self.assertIn("extrude-sheets", str(e.exception))
+        self.assertIn("extrude-curves", str(e.exception))  # the names it offers instead

@@ -20,6 +20,7 @@ from .objects.feature_curves import FeatureCurves
 from .objects.singular_curves import SingularCurves
 from .objects.singular_nodes import SingularNodes
 from .objects.snapped_paths import SnappedPaths
+from .objects.streamlines import Streamlines
 
 if FreeCAD.GuiUp:
     from .viewproviders.blocks import ViewProviderBlocks
@@ -27,10 +28,12 @@ if FreeCAD.GuiUp:
     from .viewproviders.singular_curves import ViewProviderSingularCurves
     from .viewproviders.singular_nodes import ViewProviderSingularNodes
     from .viewproviders.snapped_paths import ViewProviderSnappedPaths
+    from .viewproviders.streamlines import ViewProviderStreamlines
     VIEW_PROVIDERS = {SingularCurves: ViewProviderSingularCurves,
                       SingularNodes: ViewProviderSingularNodes,
                       FeatureCurves: ViewProviderFeatureCurves,
-                      SnappedPaths: ViewProviderSnappedPaths, Blocks: ViewProviderBlocks}
+                      SnappedPaths: ViewProviderSnappedPaths, Streamlines: ViewProviderStreamlines,
+                      Blocks: ViewProviderBlocks}
 else:
     VIEW_PROVIDERS = {}
 
@@ -143,7 +146,9 @@ def _add_parts(doc, method, blocks):
     parts = [curves, _add(doc, "Part::FeaturePython", "SingularNodes", "Singular nodes",
                           SingularNodes),
              _add(doc, "Part::FeaturePython", "FeatureCurves", "Feature curves", FeatureCurves)]
-    if corrected:
+    if corrected and method.startswith("extrude"):
+        parts.append(_add(doc, "Part::FeaturePython", "Streamlines", "Streamlines", Streamlines))
+    elif corrected:
         parts.append(_add(doc, "Part::FeaturePython", "SnappedPaths", "Snapped paths",
                           SnappedPaths))
     if blocks:

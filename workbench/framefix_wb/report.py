@@ -95,9 +95,17 @@ def _correction(c):
             _fail("correction.fillets[%d] has no integer edge or boolean done" % i)
         fillets.append({"edge": f["edge"], "radius": float(f.get("radius", 0)), "done": f["done"],
                         "reason": str(f.get("reason", ""))})
+    streamlines = [{"source": str(s.get("source", "")) if isinstance(s, dict) else "",
+                    "used": bool(s.get("used")) if isinstance(s, dict) else False,
+                    "points": _points(s.get("polyline", []) if isinstance(s, dict) else None,
+                                      "correction.streamlines[%d]" % i)}
+                   for i, s in enumerate(c.get("streamlines") or [])]
+    failures = ["%s: %s" % (f.get("what", ""), f.get("why", "")) if isinstance(f, dict) else str(f)
+                for f in c.get("failures") or []]
     return {"method": str(c.get("method", "")), "before": dict(c["before"]),
             "changed_curves": int(c.get("changed_curves", 0)), "snapped_paths": paths,
-            "fillets": fillets, "notes": [str(n) for n in c.get("notes") or []]}
+            "fillets": fillets, "notes": [str(n) for n in c.get("notes") or []],
+            "streamlines": streamlines, "failures": failures}
 
 
 BLOCK_COUNTS = ("count", "valid", "conforming_pairs", "pairs", "flat_corners", "flat_edges")
@@ -186,6 +194,15 @@ def fillet_lines(correction):
     lines = ["Edge%d filleted, radius %.4g" % (f["edge"], f["radius"]) if f["done"] else
              "Edge%d not filleted: %s" % (f["edge"], f["reason"]) for f in correction.get("fillets", [])]
     return lines + list(correction.get("notes", []))
+
+
+def extrusion_lines(correction):
+    """The extrusions' streamline count, then one line per failure; [] for other methods."""
+    if not correction or not correction.get("method", "").startswith("extrude"):
+        return []
+    lines = correction.get("streamlines", [])
+    used = sum(1 for s in lines if s["used"])
+    return ["%d of %d streamlines used" % (used, len(lines))] + list(correction.get("failures", []))
 
 
 def run_text(report):

@@ -20,6 +20,8 @@ FEATURE_COLORS = {
 }
 OTHER = (0.3, 0.3, 0.3)
 SNAPPED_PATH_COLOR = (1.00, 0.55, 0.00)  # where a correction moved a 3-5 curve to
+STREAMLINE_COLOR = (0.10, 0.75, 0.10)  # an extrusion's streamlines (green, as in the paper)
+STREAMLINE_LINE_WIDTH = 1.5
 CURVE_LINE_WIDTH = 4.0
 FEATURE_LINE_WIDTH = 2.0
 NODE_POINT_SIZE = 9.0

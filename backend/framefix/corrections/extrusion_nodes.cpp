@@ -19,6 +19,7 @@ namespace {
 constexpr int kEndFaces = 3;             // faces averaged for a curve's stable direction at its end
 constexpr double kSameDirection = 0.9;   // cosine: two starts from one node this close are one
 constexpr double kMatchRadius = 1e-6;    // inserted point found at a mesh vertex, in h
+constexpr double kAlong = 1.5;           // h: a streamline point this close to a kept curve runs along it
 constexpr double kHeadOn = 0.9;          // cosine: a streamline this close to the normal meets the boundary head-on
 
 // The holonomy axis w at end e of curve c: the mean over its last kEndFaces faces, sign-aligned.
@@ -31,6 +32,16 @@ Eigen::Vector3d end_axis(const SingularityGraph& g, const SingularCurve& c, int 
         sum += w.dot(first) < 0 ? Eigen::Vector3d(-w) : w;
     }
     return sum.norm() > 0 ? Eigen::Vector3d(sum.normalized()) : Eigen::Vector3d(c.stable_direction);
+}
+
+// Whether most of a streamline lies within kAlong h of the curves the correction keeps: one
+// traced from an interior node along a curve that leaves it adds nothing (the half-sphere's
+// nodes, traced upwards, run into the sphere along their valence-3 curves).
+bool follows_curve(const Points& p, const PointGrid& kept, double h) {
+    if (kept.empty()) return false;
+    int near = 0;
+    for (Eigen::Index j = 0; j < p.rows(); ++j) near += kept.nearest(p.row(j).transpose(), kAlong * h) >= 0;
+    return 2 * near >= p.rows();
 }
 
 struct Start {
@@ -156,11 +167,13 @@ ExtrusionPlan plan_node_extrusion(const TetMesh& mesh, const TetTopology& topo, 
     const BoundaryDistance boundary(mesh);
     const TraceOptions to = detail::trace_options(graph, o);
     detail::Candidates cand;
+    const PointGrid kept(to.singular_points, h);
     for (const Start& s : starts(graph, locator, boundary, h, plan.failures)) {
         const std::string name = "node " + std::to_string(s.node);
         for (ExtrusionStreamline& l : detail::trace(mesh, field, locator, {s.point}, {s.direction}, to, name)) {
             l.valence = s.valence;
             l.reference = s.direction.unitOrthogonal();
+            if (l.used && follows_curve(l.line.points, kept, h)) l.used = false, l.failure = "follows an existing singular curve";
             if (!l.used) plan.failures.push_back({name, "the streamline " + l.failure + "; it is not used"});
             for (Eigen::Index j = 1; l.used && j < l.line.points.rows(); ++j)
                 cand.points.push_back(l.line.points.row(j).transpose()), cand.axes.push_back(detail::along(l.line.points, j));

@@ -1,6 +1,7 @@
 // The correction stage: a registered method changes the set-up, then field and graph are
 // solved again on it. Progress: correct 0 -> 0.1 method, 0.1 -> 0.9 re-solve, then the graph.
 #include <chrono>
+#include <optional>
 
 #include "framefix/pipeline/correction_methods.h"
 #include "framefix/pipeline/fillet_map.h"
@@ -10,6 +11,8 @@ namespace framefix::detail {
 namespace {
 
 constexpr double kRotationThresholdDeg = 10;  // "frames turned" in the report counts above this
+
+int defects(const SingularitySummary& s) { return s.curves_3_5 + s.invalid_nodes; }
 
 }  // namespace
 
@@ -21,6 +24,9 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
     c.method = method.name;
     c.before = graph.summary;
     report(options.progress, "correct", 0.0);
+    std::optional<MeshStage> mesh_before;  // never_worse: what to go back to
+    std::optional<Constraints> constraints_before;
+    if (method.never_worse) mesh_before = mesh, constraints_before = field.constraints;
     CorrectionContext context{options, model, mesh, field, graph, c};
     c.changed = method.apply(context);
     c.graph_before = graph;
@@ -34,6 +40,16 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
         graph = find_singularities(mesh, field, options);
         if (!c.remeshed)  // frames of another mesh cannot be compared vertex by vertex
             c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
+        if (mesh_before && defects(graph.summary) > defects(c.before)) {
+            c.extrusion.failures.push_back(
+                {"result", "it has " + std::to_string(defects(graph.summary)) + " 3-5 curves plus invalid nodes, the input " +
+                               std::to_string(defects(c.before)) + ": the input's graph is kept"});
+            c.worse_dropped = true;
+            mesh = std::move(*mesh_before);
+            field = FieldStage{std::move(*constraints_before), c.field_before};
+            graph = c.graph_before;
+            c.remeshed = false;
+        }
         if (c.filleted && model) {
             MappedGraph m = map_back(*model, c.fillets, graph);
             c.mapped = std::move(m.graph);

@@ -25,6 +25,9 @@ struct CorrectionMethod {
     bool available = false;   // implemented in this build
     // Returns true when it changed the set-up (the pipeline then re-solves); null when unavailable.
     bool (*apply)(CorrectionContext&) = nullptr;
+    // The result is dropped, and the input's mesh, field and graph kept, when it has more 3-5
+    // curves plus invalid nodes than the input (the reason goes to the failures).
+    bool never_worse = false;
 };
 
 // Every method the paper describes, in the order the user sees them; the first is the default.

@@ -72,14 +72,18 @@ json extrusion_json(const Correction& c) {
     json lines = json::array(), failures = json::array();
     for (const ExtrusionStreamline& l : c.extrusion.streamlines) {
         const Points& p = l.line.points;
+        json poly = json::array();
+        for (Eigen::Index i = 0; i < p.rows(); ++i) poly.push_back(point(p.row(i).transpose()));
         json one = {{"source", l.source}, {"start", point(p.row(0).transpose())}, {"end", point(p.row(p.rows() - 1).transpose())},
-                    {"length", l.line.length}, {"points", p.rows()}, {"stop", to_string(l.line.reason)}, {"used", l.used}};
+                    {"length", l.line.length}, {"points", p.rows()}, {"stop", to_string(l.line.reason)}, {"used", l.used},
+                    {"polyline", poly}};
         if (!l.used) one["failure"] = l.failure;
         lines.push_back(one);
     }
     for (const ExtrusionFailure& f : c.extrusion.failures) failures.push_back({{"what", f.what}, {"why", f.why}});
     return {{"streamlines", lines}, {"failures", failures}, {"extruded_edges", c.extrusion.edges},
             {"inserted_points", c.extrusion.points.rows()}, {"constrained_points", c.constrained_points},
+            {"kept", c.changed && !c.worse_dropped},
             {"extrusion_seconds", c.extrusion_seconds}};
 }
 

@@ -61,6 +61,7 @@ struct Correction {
     double fillet_seconds = 0;      // choosing the edges and filleting (OCCT), before the remesh
     double remesh_seconds = 0;      // features and tets of the filleted solid
     bool changed = false;           // the method changed the set-up; field and graph were re-solved
+    bool worse_dropped = false;     // its result was worse than the input and was dropped (never_worse)
     double rotated_fraction = 0;    // vertices whose frame turned by more than 10 degrees
     double seconds = 0;             // method + re-solve + re-extraction
 };

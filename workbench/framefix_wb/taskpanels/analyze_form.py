@@ -6,7 +6,7 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
-from ..report import blocks_text, curve_breakdown, fillet_lines
+from ..report import blocks_text, curve_breakdown, extrusion_lines, fillet_lines
 
 
 class AnalyzeForm(QtWidgets.QWidget):
@@ -131,13 +131,12 @@ class AnalyzeForm(QtWidgets.QWidget):
             "<br>%s<br>%s" % (
                 verdict, before, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],
                 s["invalid_nodes"], style.legend_html(style.CURVE_COLORS, kinds),
-                style.legend_html(dict(style.NODE_COLORS, **(
-                    {"paths": (style.SNAPPED_PATH_COLOR, "snapped path")} if correction
-                    else {})))))
-        fillets = fillet_lines(correction)
-        if fillets:
-            self.summary.setText(self.summary.text() + "<br><b>Fillets:</b><br>" +
-                                 "<br>".join(html.escape(line) for line in fillets))
+                style.legend_html(dict(style.NODE_COLORS, **_correction_legend(correction)))))
+        for title, lines in (("Fillets", fillet_lines(correction)),
+                             ("Extrusion", extrusion_lines(correction))):
+            if lines:
+                self.summary.setText(self.summary.text() + "<br><b>%s:</b><br>" % title +
+                                     "<br>".join(html.escape(line) for line in lines))
         self.estimate.setText("{:,} tets, size {:.4g} (this run)".format(
             int(mesh.get("tets", 0)), float(mesh.get("size", 0))))
         self.bar.setValue(1000)
@@ -156,3 +155,12 @@ class AnalyzeForm(QtWidgets.QWidget):
     def log_line(self, text):
         self.flush_output()
         self.log.appendPlainText(text)
+
+
+def _correction_legend(correction):
+    """What a correction adds to the node legend: snapped paths, or an extrusion's streamlines."""
+    if not correction:
+        return {}
+    if correction.get("method", "").startswith("extrude"):
+        return {"streamlines": (style.STREAMLINE_COLOR, "streamline")}
+    return {"paths": (style.SNAPPED_PATH_COLOR, "snapped path")}
