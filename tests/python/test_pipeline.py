@@ -44,6 +44,17 @@ def test_correct_notch_keeps_what_it_corrected():
     assert r.blocks is None
 
 
+def test_extrusion_from_python_lists_its_streamlines_and_failures():
+    r = framefix.correct(NOTCH, method="extrude-curves")
+    c = r.correction
+    assert c.method == "extrude-curves" and c.remeshed and c.constrained_points > 0
+    assert r.singularities.summary["meshable"]
+    used = [s for s in c.streamlines if s["used"]]
+    assert used and all(s["stop"] == "left_solid" and s["points"].shape[1] == 3 for s in used)
+    assert isinstance(c.failures, list)
+    assert r.mesh.num_vertices == r.field.axes.shape[0]  # the new mesh carries the new field
+
+
 def test_blocks_of_the_l_prism_without_correction():
     r = framefix.build_blocks(str(SAMPLES / "l_prism.step"), method="none", size=0.05)
     assert r.correction is None

@@ -40,6 +40,10 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
         graph = find_singularities(mesh, field, options);
         if (!c.remeshed)  // frames of another mesh cannot be compared vertex by vertex
             c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
+        if (mesh_before && !graph.summary.meshable && defects(graph.summary) <= defects(c.before))
+            c.extrusion.failures.push_back({"result", "not hex-meshable yet: " + std::to_string(graph.summary.curves_3_5) +
+                                                          " 3-5 curves, " + std::to_string(graph.summary.invalid_nodes) +
+                                                          " invalid nodes (the input: " + std::to_string(defects(c.before)) + " in all)"});
         if (mesh_before && defects(graph.summary) > defects(c.before)) {
             c.extrusion.failures.push_back(
                 {"result", "it has " + std::to_string(defects(graph.summary)) + " 3-5 curves plus invalid nodes, the input " +
