@@ -54,12 +54,12 @@ struct Correction {
     // points inserted into the new mesh (constrained_points of them carry the internal constraint).
     ExtrusionPlan extrusion;
     int constrained_points = 0;
-    double extrusion_seconds = 0;   // tracing + remeshing with the points
+    double extrusion_seconds = 0;   // tracing and choosing the points (the remesh is remesh_seconds)
     bool remeshed = false;          // the mesh was replaced (field_before lives on the old one)
     std::optional<SingularityGraph> mapped;  // fillet: the corrected graph on the original part
     int mapped_points = 0, mapped_nodes = 0;  // fillet: curve points and nodes moved onto the concave edges
     double fillet_seconds = 0;      // choosing the edges and filleting (OCCT), before the remesh
-    double remesh_seconds = 0;      // features and tets of the filleted solid
+    double remesh_seconds = 0;      // features and tets of the filleted solid; extrusions: TetGen with the points
     bool changed = false;           // the method changed the set-up; field and graph were re-solved
     bool worse_dropped = false;     // its result was worse than the input and was dropped (never_worse)
     double rotated_fraction = 0;    // vertices whose frame turned by more than 10 degrees
