@@ -114,6 +114,25 @@ TEST(Solver, ConstraintsHoldExactlyAfterTheSolve) {
     }
 }
 
+// A singular frame (the extrusions' forced curves) is the axisymmetric element about its axis:
+// accepted although it is no frame, kept exactly, and its axes have the imposed one.
+TEST(Solver, SingularFramesAreKeptWithTheirAxis) {
+    const testing::Fixture fx = testing::cube_tets(6);
+    const TetTopology topo = build_topology(fx.mesh);
+    Constraints c = boundary_constraints(fx.mesh, fx.features);
+    const Eigen::Vector3d axis = Eigen::Vector3d(0, 0, 1);
+    std::vector<int> line;
+    for (int k = 2; k <= 4; ++k) line.push_back(testing::cube_vertex(6, 3, 3, k));
+    for (int v : line) set_singular(c, v, axis);
+    const FrameField f = solve_frame_field(fx.mesh, topo, c);
+    const SH9 zonal = normal_aligned(axis).c;
+    EXPECT_NEAR(zonal.norm(), std::sqrt(7.0 / 12.0), 1e-12);
+    for (int v : line) {
+        EXPECT_LT((f.coefficients.row(v).transpose() - zonal).norm(), 1e-14);
+        EXPECT_NEAR(std::abs(f.axes.block<1, 3>(v, 6).dot(axis.transpose())), 1.0, 1e-12);
+    }
+}
+
 TEST(Solver, DeterministicForTheSameInputAndThreads) {
     const testing::Fixture fx = twisted_cube();
     const TetTopology topo = build_topology(fx.mesh);

@@ -1,5 +1,6 @@
 // TetGen wrapper on PLCs built in code: a unit cube with tagged faces and feature edges.
 #include <cstdlib>
+#include <algorithm>
 #include <set>
 #include <vector>
 
@@ -7,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "framefix/core/error.h"
+#include "framefix/mesh/boundary_surface.h"
 #include "framefix/tetgen/tetrahedralize.h"
 
 namespace framefix {
@@ -173,6 +175,27 @@ TEST(Tetrahedralize, CrashInTheWorkerIsAStatus) {
     EXPECT_EQ(crashed.status, TetgenStatus::crashed);
     EXPECT_NE(crashed.message.find("TetGen crashed (Segmentation fault)"), std::string::npos) << crashed.message;
     EXPECT_EQ(steiner.status, TetgenStatus::meshed) << steiner.message;
+}
+
+// The extrusions mesh the solid again from its own boundary with points inserted: the boundary
+// comes back triangle for triangle with its tags, and every inserted point is a vertex.
+TEST(Tetrahedralize, RemeshFromTheBoundaryKeepsItAndInsertsThePoints) {
+    const TetMesh first = tetrahedralize(cube(), sized(0.25));
+    const BoundarySurface b = boundary_surface(first);
+    Points inserted(3, 3);
+    inserted << 0.5, 0.5, 0.5, 0.31, 0.62, 0.47, 0.7, 0.2, 0.55;
+    const TetMesh again = tetrahedralize(b.surface, sized(0.25), inserted);
+    ASSERT_EQ(again.boundary_faces.rows(), first.boundary_faces.rows());
+    std::multiset<int> tags_first(first.face_tags.data(), first.face_tags.data() + first.face_tags.size()),
+        tags_again(again.face_tags.data(), again.face_tags.data() + again.face_tags.size());
+    EXPECT_EQ(tags_first, tags_again);
+    EXPECT_EQ(again.feature_edges.rows(), first.feature_edges.rows());
+    for (int c = 0; c < 8; ++c) EXPECT_EQ(again.points.row(again.corner_vertices(c)), first.points.row(first.corner_vertices(c)));
+    for (int i = 0; i < 3; ++i) {
+        double nearest = 1e9;
+        for (int v = 0; v < again.num_vertices(); ++v) nearest = std::min(nearest, (again.points.row(v) - inserted.row(i)).norm());
+        EXPECT_EQ(nearest, 0.0) << "inserted point " << i;
+    }
 }
 
 }  // namespace
