@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 
 #include <Eigen/Geometry>
 
@@ -20,6 +21,7 @@ constexpr int kEndFaces = 3;             // faces averaged for a curve's stable 
 constexpr double kSameDirection = 0.9;   // cosine: two starts from one node this close are one
 constexpr double kMatchRadius = 1e-6;    // inserted point found at a mesh vertex, in h
 constexpr double kAlong = 1.5;           // h: a streamline point this close to a kept curve runs along it
+constexpr double kApart = 1.5;           // h: forced ends closer than this on the boundary may merge
 constexpr double kHeadOn = 0.9;          // cosine: a streamline this close to the normal meets the boundary head-on
 
 // The holonomy axis w at end e of curve c: the mean over its last kEndFaces faces, sign-aligned.
@@ -155,6 +157,22 @@ Points rings(const ExtrusionPlan& plan, const TetMesh& mesh, double h, double r)
     return p;
 }
 
+// Forced curves of opposite valence whose boundary ends are closer than kApart h read as one
+// node there (the mesh cannot keep them apart): said in the failures, with what helps.
+void note_close_ends(ExtrusionPlan& plan, double h) {
+    const auto& l = plan.streamlines;
+    for (size_t i = 0; i < l.size(); ++i)
+        for (size_t j = i + 1; j < l.size(); ++j) {
+            if (!l[i].used || !l[j].used || l[i].valence == l[j].valence) continue;
+            const double d = (l[i].line.points.bottomRows<1>() - l[j].line.points.bottomRows<1>()).norm();
+            if (d >= kApart * h) continue;
+            char what[160];
+            std::snprintf(what, sizeof what, "the streamlines from %s and %s end %.1f h apart on the boundary; a finer --size "
+                          "keeps their curves apart", l[i].source.c_str(), l[j].source.c_str(), d / h);
+            plan.failures.push_back({l[i].source, what});
+        }
+}
+
 }  // namespace
 
 ExtrusionPlan plan_node_extrusion(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
@@ -180,6 +198,7 @@ ExtrusionPlan plan_node_extrusion(const TetMesh& mesh, const TetTopology& topo, 
             plan.streamlines.push_back(std::move(l));
         }
     }
+    note_close_ends(plan, h);
     fit_phases(mesh, field, locator, h, plan.streamlines);
     cand.select(mesh, h, o, plan);
     if (o.ring_radius_h > 0) plan.ring_points = rings(plan, mesh, h, o.ring_radius_h);
