@@ -14,6 +14,31 @@ constexpr double kRotationThresholdDeg = 10;  // "frames turned" in the report c
 
 int defects(const SingularitySummary& s) { return s.curves_3_5 + s.invalid_nodes; }
 
+// A never_worse method's result with more 3-5 curves plus invalid nodes than its input is
+// dropped: the input's mesh, field and graph come back, and the notes (and an extrusion's
+// failures) say why. A result not worse but still not hex-meshable is said too.
+void keep_only_if_not_worse(Correction& c, MeshStage& mesh_before, Constraints& constraints_before, MeshStage& mesh,
+                            FieldStage& field, SingularityGraph& graph) {
+    const int before = defects(c.before), after = defects(graph.summary);
+    std::string why;
+    if (after > before) {
+        why = "it has " + std::to_string(after) + " 3-5 curves plus invalid nodes, the input " + std::to_string(before) +
+              ": the input's graph is kept";
+        c.worse_dropped = true;
+        mesh = std::move(mesh_before);
+        field = FieldStage{std::move(constraints_before), c.field_before};
+        graph = c.graph_before;
+        c.remeshed = false;
+        c.filleted.reset();
+    } else if (!graph.summary.meshable) {
+        why = "not hex-meshable yet: " + std::to_string(graph.summary.curves_3_5) + " 3-5 curves, " +
+              std::to_string(graph.summary.invalid_nodes) + " invalid nodes (the input: " + std::to_string(before) + " in all)";
+    }
+    if (why.empty()) return;
+    c.notes.push_back("result: " + why);
+    if (c.method.rfind("extrude", 0) == 0) c.extrusion.failures.push_back({"result", why});
+}
+
 }  // namespace
 
 Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
@@ -40,20 +65,7 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
         graph = find_singularities(mesh, field, options);
         if (!c.remeshed)  // frames of another mesh cannot be compared vertex by vertex
             c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
-        if (mesh_before && !graph.summary.meshable && defects(graph.summary) <= defects(c.before))
-            c.extrusion.failures.push_back({"result", "not hex-meshable yet: " + std::to_string(graph.summary.curves_3_5) +
-                                                          " 3-5 curves, " + std::to_string(graph.summary.invalid_nodes) +
-                                                          " invalid nodes (the input: " + std::to_string(defects(c.before)) + " in all)"});
-        if (mesh_before && defects(graph.summary) > defects(c.before)) {
-            c.extrusion.failures.push_back(
-                {"result", "it has " + std::to_string(defects(graph.summary)) + " 3-5 curves plus invalid nodes, the input " +
-                               std::to_string(defects(c.before)) + ": the input's graph is kept"});
-            c.worse_dropped = true;
-            mesh = std::move(*mesh_before);
-            field = FieldStage{std::move(*constraints_before), c.field_before};
-            graph = c.graph_before;
-            c.remeshed = false;
-        }
+        if (mesh_before) keep_only_if_not_worse(c, *mesh_before, *constraints_before, mesh, field, graph);
         if (c.filleted && model) {
             MappedGraph m = map_back(*model, c.fillets, graph);
             c.mapped = std::move(m.graph);

@@ -118,7 +118,7 @@ std::string names() {
 const std::vector<CorrectionMethod>& correction_methods() {
     static const std::vector<CorrectionMethod> methods = {
         {"snap", "snap 3-5 curves onto the boundary (the paper's recommendation)", true, &apply_snap},
-        {"fillet", "insert fillets on the B-rep along the concave feature curves that cause 3-5 curves", true, &apply_fillet},
+        {"fillet", "insert fillets on the B-rep along the concave feature curves that cause 3-5 curves", true, &apply_fillet, true},
         {"extrude-curves", "extrude the concave feature curves into the volume along the field's stable direction", true, &apply_extrude_curves, true},
         {"extrude-nodes", "extrude the ends of the 3-5 curves into the volume along streamlines of the field", true, &apply_extrude_nodes, true},
     };

@@ -83,7 +83,6 @@ json extrusion_json(const Correction& c) {
     for (const ExtrusionFailure& f : c.extrusion.failures) failures.push_back({{"what", f.what}, {"why", f.why}});
     return {{"streamlines", lines}, {"failures", failures}, {"extruded_edges", c.extrusion.edges},
             {"inserted_points", c.extrusion.points.rows()}, {"constrained_points", c.constrained_points},
-            {"kept", c.changed && !c.worse_dropped},
             {"extrusion_seconds", c.extrusion_seconds}};
 }
 
@@ -105,6 +104,7 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"fillets", fillets},
             {"notes", c.notes},
             {"remeshed", c.remeshed},
+            {"kept", c.changed && !c.worse_dropped},
             {"mapped", c.mapped ? json{{"summary", summary_json(c.mapped->summary)},
                                        {"moved_points", c.mapped_points},
                                        {"moved_nodes", c.mapped_nodes},
