@@ -113,3 +113,14 @@ def test_a_worse_result_is_dropped_with_its_reason(tmp_path):
     c = json.loads((out / "report.json").read_text())["correction"]
     assert not c["kept"] and c["after"] == c["before"]
     assert any(f["what"] == "result" and "kept" in f["why"] for f in c["failures"])
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_one_and_two_threads_give_the_same_extrusion(tmp_path, method):
+    reports = []
+    for threads in ("1", "2"):
+        r, _ = extrude(tmp_path / threads, "notch.step", method, "--threads", threads)
+        c = r["correction"]
+        reports.append((c["after"], c["inserted_points"], c["constrained_points"], r["mesh"]["tets"],
+                        [s["end"] for s in c["streamlines"]]))
+    assert reports[0] == reports[1]
