@@ -175,6 +175,13 @@ class Correction(unittest.TestCase):
         filleted = [o for o in self.doc.Objects if o.Name.startswith("FilletedPart")]
         self.assertEqual(len(filleted), 1)
         self.assertEqual(len(filleted[0].Shape.Faces), faces + 1)
+        # Moving the part reruns the analysis on recompute, and its filleted solid moves along.
+        x_min = filleted[0].Shape.BoundBox.XMin
+        part.Placement.Base = FreeCAD.Vector(2, 0, 0)
+        self.doc.recompute()
+        self.assertTrue(filleted[0].isValid())
+        self.assertAlmostEqual(filleted[0].Shape.BoundBox.XMin, x_min + 2, places=6)
+        self.assertEqual(len(filleted[0].Shape.Faces), faces + 1)
 
 
     def test_extrusions_show_their_streamlines_inside_the_part(self):

@@ -8,15 +8,14 @@ The backend runs before anything is added, so a failed run leaves the document u
 Each change is one undoable transaction. The make layer: above the proxies (objects/) and
 runs.py, below taskpanels/ and commands/.
 """
-import json
 
 import FreeCAD
-import Part
 
 from . import runs, shapes, style
 from .errors import FrameFixError
 from .objects.blocks import Blocks
 from .objects.feature_curves import FeatureCurves
+from .objects.filleted_part import FilletedPart
 from .objects.singular_curves import SingularCurves
 from .objects.singular_nodes import SingularNodes
 from .objects.snapped_paths import SnappedPaths
@@ -112,23 +111,22 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
                               "FrameFixCorrection" if method else "FrameFixAnalysis")
         group.Label = _group_label(source, method, blocks)
         curves, parts = _add_parts(doc, method, blocks)
-        if report.get("filleted_brep"):
-            parts.append(_add_filleted(doc, source, report["filleted_brep"]))
         curves.Source, curves.Size, curves.Blocks, curves.Method = source, size, blocks, method
-        curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
+        runs.store(curves, report, digest)
+        if curves.FilletedBrep:
+            parts.append(_add_filleted(doc, source, curves))
         group.addObjects(parts)
         _fade_source(curves, source)
         _recompute(doc, parts)
     return curves
 
 
-def _add_filleted(doc, source, brep):
-    """The fillet correction's solid as a new Part feature (the user's part is not touched)."""
-    shape = Part.Shape()
-    shape.importBrepFromString(brep)
-    obj = doc.addObject("Part::Feature", "FilletedPart")
-    obj.Label = "Filleted %s" % shapes.label_of(source)
-    obj.Shape = shape
+def _add_filleted(doc, source, curves):
+    """The fillet correction's solid as a new feature reading curves.FilletedBrep (the user's
+    part is not touched)."""
+    obj = _add(doc, "Part::FeaturePython", "FilletedPart", "Filleted %s" % shapes.label_of(source),
+               FilletedPart)
+    obj.Analysis = curves
     return obj
 
 
@@ -165,23 +163,18 @@ def update_analysis(curves, size, report, digest, method=""):
         runs.remember_block_mesh(digest, report)
     with _Transaction(doc, _kind(method, curves.Blocks)):
         curves.Size, curves.Method = float(size or 0.0), method
-        curves.Report, curves.InputDigest = json.dumps(report["raw"]), digest
-        if report.get("filleted_brep"):
-            _replace_filleted(curves, report["filleted_brep"])
+        runs.store(curves, report, digest)
+        if curves.FilletedBrep and not [o for o in curves.InList if o.Name.startswith("FilletedPart")]:
+            _add_filleted_to_group(curves)
         _fade_source(curves, curves.Source)
         _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])
     return curves
 
 
-def _replace_filleted(curves, brep):
-    """The analysis group's filleted solid, made again from a new run (added when missing)."""
-    groups = [o for o in curves.InList if o.isDerivedFrom("App::DocumentObjectGroup")]
-    for group in groups:
-        for obj in group.Group:
-            if obj.Name.startswith("FilletedPart"):
-                group.removeObject(obj)
-                curves.Document.removeObject(obj.Name)
-        group.addObject(_add_filleted(curves.Document, curves.Source, brep))
+def _add_filleted_to_group(curves):
+    """A filleted solid for an analysis that had none (a panel run switched it to fillet)."""
+    for group in [o for o in curves.InList if o.isDerivedFrom("App::DocumentObjectGroup")]:
+        group.addObject(_add_filleted(curves.Document, curves.Source, curves))
 
 
 def make_blocks(source, size=None, method="snap", report=None, digest=None, backend=None):

@@ -118,6 +118,13 @@ def run(solid, size, method=None, blocks=False, backend=None, timeout=None, out_
     return report
 
 
+def store(curves, report, digest):
+    """A run's report (and the fillet's solid) on its SingularCurves object."""
+    curves.Report = json.dumps(report["raw"])
+    curves.InputDigest = digest
+    curves.FilletedBrep = report.get("filleted_brep") or ""
+
+
 def refresh(curves):
     """Bring a SingularCurves object's Report up to date: rerun if its solid, Size, Method or
     Blocks changed since (InputDigest): results applied from the panel are not run twice."""
@@ -126,7 +133,6 @@ def refresh(curves):
     digest = input_digest(solid, size, curves.Method, curves.Blocks)
     if digest != curves.InputDigest or not curves.Report:
         report = run(solid, size, method=curves.Method or None, blocks=curves.Blocks)
-        curves.Report = json.dumps(report["raw"])
-        curves.InputDigest = digest
+        store(curves, report, digest)
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (curves.Source.Label,
                                                             run_text(report)))

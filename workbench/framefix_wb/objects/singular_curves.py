@@ -35,6 +35,8 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyString", "Report", "FrameFix", "report.json of the last run", HIDDEN)
         add(obj, "App::PropertyString", "InputDigest", "FrameFix", "solid, size, method of that run",
             HIDDEN)
+        add(obj, "App::PropertyString", "FilletedBrep", "FrameFix",
+            "method fillet: the filleted solid of that run (BREP text), read by FilletedPart", HIDDEN)
         add(obj, "App::PropertyIntegerList", "EdgeKinds", "FrameFix",
             "per edge: 3 valence 3, 5 valence 5, 35 3-5 curve, 0 other", HIDDEN)
         add(obj, "App::PropertyIntegerList", "EdgeCurves", "FrameFix", "per edge: curve id", HIDDEN)
