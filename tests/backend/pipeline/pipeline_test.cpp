@@ -154,7 +154,9 @@ TEST(CorrectionRegistry, ListsThePapersFourMethodsSnapFirst) {
     }
     EXPECT_EQ(&find_correction_method("snap"), &all[0]);
     EXPECT_EQ(&find_correction_method("fillet"), &all[1]);
-    EXPECT_THROW(find_correction_method("extrude-curves"), Error);  // not available yet
+    EXPECT_EQ(&find_correction_method("extrude-curves"), &all[2]);
+    EXPECT_EQ(&find_correction_method("extrude-nodes"), &all[3]);
+    for (const auto& m : all) EXPECT_EQ(m.never_worse, m.name != "snap") << m.name;  // snap: issue 15
     EXPECT_THROW(find_correction_method("chamfer"), Error);
 }
 
