@@ -86,15 +86,19 @@ bool apply_extrusion(CorrectionContext& c, ExtrusionPlan plan) {
         p.failures.push_back({"mesh", "TetGen could not insert the streamline points: " + run.message});
         return false;
     }
-    TetMesh tets = std::move(run.mesh);
-    c.mesh.tets = std::move(tets);
-    c.mesh.topology = build_topology(c.mesh.tets);
-    c.field.constraints = boundary_constraints(c.mesh.tets, c.mesh.features);
-    c.record.constrained_points = add_internal_constraints(c.mesh.tets, p, c.field.constraints, extrusion_options(c.options));
-    c.record.remeshed = true;
+    Constraints constraints = boundary_constraints(run.mesh, c.mesh.features);
+    c.record.constrained_points = add_internal_constraints(run.mesh, p, constraints, extrusion_options(c.options));
     c.record.extrusion_seconds = p.seconds;
     c.record.remesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return c.record.constrained_points > 0;
+    if (c.record.constrained_points == 0) {  // the run keeps its mesh and field
+        p.failures.push_back({"mesh", "no inserted point is a free vertex of the new mesh: nothing to constrain"});
+        return false;
+    }
+    c.mesh.tets = std::move(run.mesh);
+    c.mesh.topology = build_topology(c.mesh.tets);
+    c.field.constraints = std::move(constraints);
+    c.record.remeshed = true;
+    return true;
 }
 
 bool apply_extrude_curves(CorrectionContext& c) {
