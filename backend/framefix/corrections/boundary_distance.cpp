@@ -61,4 +61,18 @@ bool BoundaryDistance::within(const Eigen::Vector3d& p, double radius) const {
     return false;
 }
 
+Eigen::Vector3d BoundaryDistance::closest(const Eigen::Vector3d& p, double radius) const {
+    std::vector<int> near;
+    centroids_.within(p, radius + reach_, near);
+    Eigen::Vector3d best = p;
+    double d = radius;
+    for (int f : near) {
+        const Eigen::Vector3d q = closest_on_triangle(p, mesh_.points.row(mesh_.boundary_faces(f, 0)).transpose(),
+                                                      mesh_.points.row(mesh_.boundary_faces(f, 1)).transpose(),
+                                                      mesh_.points.row(mesh_.boundary_faces(f, 2)).transpose());
+        if ((q - p).norm() < d) d = (q - p).norm(), best = q;
+    }
+    return best;
+}
+
 }  // namespace framefix

@@ -13,6 +13,8 @@ public:
     explicit BoundaryDistance(const TetMesh& mesh);
     // True when p is closer than `radius` to a boundary triangle.
     bool within(const Eigen::Vector3d& p, double radius) const;
+    // The closest point to p on the boundary triangles within `radius`; p itself when none.
+    Eigen::Vector3d closest(const Eigen::Vector3d& p, double radius) const;
 
 private:
     const TetMesh& mesh_;

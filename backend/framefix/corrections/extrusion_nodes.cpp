@@ -136,6 +136,23 @@ void fit_phases(const TetMesh& mesh, const FrameField& field, const TetLocator& 
     }
 }
 
+// Rings on the boundary about where each forced curve ends, on the boundary triangles (TetGen
+// splits them, no -Y): the surface singularities there get room of their own.
+void surface_rings(const ExtrusionPlan& plan, const BoundaryDistance& boundary, double h, double r,
+                   std::vector<Eigen::Vector3d>& out) {
+    constexpr int kRingPoints = 6;
+    for (const ExtrusionStreamline& l : plan.streamlines) {
+        if (!l.used || l.line.points.rows() < 2) continue;
+        const Eigen::Vector3d end = l.line.points.bottomRows<1>().transpose();
+        const Eigen::Vector3d d = detail::along(l.line.points, l.line.points.rows() - 1), e1 = d.unitOrthogonal(), e2 = d.cross(e1);
+        for (double radius : {r, 2 * r})
+            for (int k = 0; k < kRingPoints; ++k) {
+                const double t = 2 * M_PI * k / kRingPoints;
+                out.push_back(boundary.closest(end + radius * h * (std::cos(t) * e1 + std::sin(t) * e2), h));
+            }
+    }
+}
+
 // kRingPoints points on a circle of radius r h about each inserted point, normal to its axis,
 // kept away from the boundary: the mesh is refined around the forced curves.
 Points rings(const ExtrusionPlan& plan, const TetMesh& mesh, double h, double r) {
@@ -150,6 +167,7 @@ Points rings(const ExtrusionPlan& plan, const TetMesh& mesh, double h, double r)
             if (!boundary.within(x, 0.5 * r * h)) out.push_back(x);
         }
     }
+    surface_rings(plan, boundary, h, r, out);
     Points p(Eigen::Index(out.size()), 3);
     for (size_t k = 0; k < out.size(); ++k) p.row(Eigen::Index(k)) = out[k].transpose();
     return p;
