@@ -67,18 +67,19 @@ def test_half_sphere_box_becomes_valid_by_feature_curve_extrusion(tmp_path, flag
     assert r["correction"]["before"]["curves_3_5"] == 4
 
 
-def test_half_sphere_box_node_extrusion_traces_from_the_interior_nodes(tmp_path):
+@pytest.mark.parametrize("name", ["half_sphere_box.step", "half_sphere_box_large.step"])
+def test_half_sphere_box_node_extrusion_traces_from_the_interior_nodes(tmp_path, name):
     """The paper traced boundary ends only and missed four valence-3 curves; from the interior
     nodes the four 3-5 curves become four valence-5 curves (circle to the bottom) and four
-    valence-3 curves (interior node to the bottom). The large variant gives it in full; the
-    reference sample keeps one pair merged where their ends meet on the bottom face."""
-    r, out = extrude(tmp_path, "half_sphere_box_large.step", "extrude-nodes")
+    valence-3 curves (interior node to the bottom)."""
+    r, out = extrude(tmp_path, name, "extrude-nodes")
     check_valid(r, out)
     c = r["correction"]
+    bottom_z = min(s["end"][2] for s in c["streamlines"])
     interior = [s for s in c["streamlines"] if s["used"] and abs(s["start"][2]) > 0.1]
     assert len(interior) >= 4  # from the interior nodes, down to the box's bottom
-    assert all(abs(s["end"][2] + 1) < 1e-3 for s in interior)
-    bottom = [k for k in r["singularities"]["curves"] if min(p[2] for p in k["points"]) < -0.99]
+    assert all(abs(s["end"][2] - bottom_z) < 1e-3 for s in interior)
+    bottom = [k for k in r["singularities"]["curves"] if min(p[2] for p in k["points"]) < bottom_z + 0.01]
     assert sorted(k["kind"] for k in bottom) == ["valence3"] * 4 + ["valence5"] * 4
 
 
