@@ -18,14 +18,7 @@ int main(int argc, char** argv) {
     RunOptions options;
     options.correction = "fillet";
     options.stop_after = Stage::correction;
-    std::vector<std::string> samples;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string("0"); };
-        if (a == "--size-factor") options.size_factor = std::atof(next().c_str());
-        else if (a == "--threads") options.threads = std::atoi(next().c_str());
-        else samples.push_back(a);
-    }
+    const std::vector<std::string> samples = bench::sample_args(argc, argv, options);
     if (samples.empty()) {
         std::fprintf(stderr, "usage: bench_fillet [--size-factor F] [--threads T] SAMPLE...\n");
         return 2;

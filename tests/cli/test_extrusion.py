@@ -105,9 +105,10 @@ def test_part_without_three_five_curves_is_unchanged(tmp_path, method):
 def test_a_worse_result_is_dropped_with_its_reason(tmp_path):
     """n15o (an icosahedron) has 13 3-5 curves; its sheets hit each other and the re-solved field is
     worse: the input's graph is kept and the failure says why."""
-    hexme = Path(os.environ.get("FRAMEFIX_HEXME", SAMPLES.parents[1] / "shared" / "data" / "hexme")) / "n15o_icosahedron.step"
-    if not hexme.exists():
-        pytest.skip("HexMe models not present")
+    folder = os.environ.get("FRAMEFIX_HEXME")  # the HexMe models' folder, when this machine has them
+    hexme = Path(folder or ".") / "n15o_icosahedron.step"
+    if not folder or not hexme.exists():
+        pytest.skip("set FRAMEFIX_HEXME to the HexMe models' folder to run this test")
     out = tmp_path / "out"
     code, _, err = run("correct", hexme, "--method", "extrude-curves", "--out", out, "--quiet", timeout=600)
     assert code == 0, err
