@@ -85,7 +85,14 @@ void bind_correction(py::module_& m) {
             return out;
         }, "methods extrude-*: what failed and why (a failure is a result, not an error)")
         .def_readonly("constrained_points", &Correction::constrained_points,
-                      "methods extrude-*: vertices of the new mesh carrying an internal constraint");
+                      "methods extrude-*: vertices of the new mesh carrying an internal constraint")
+        .def_property_readonly("mapped", [](const Correction& c) { return optional_of(c.mapped); },
+                               "method fillet: the corrected graph mapped onto the original part, else None")
+        .def_property_readonly("flat_corners", [](const Correction& c) -> py::object {
+            if (!c.flat_corners || !c.flat_corners->solved) return py::none();
+            return py::cast(c.flat_corners->graph);
+        }, "method fillet: the original part's graph solved again with flat corners under the mapped "
+           "valence-5 curves, else None");
 }
 
 void bind_blocks(py::module_& m) {

@@ -63,6 +63,18 @@ def test_half_sphere_box_gets_four_extra_valence5_curves(tmp_path, flags):
 
 
 @pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
+def test_half_sphere_box_original_part_is_valid_with_flat_corners(tmp_path, flags):
+    """The mapped graph as a correction of the original part: its valence-5 curves on the concave
+    circle turn the circle's frames by 45 deg, and the original mesh solved again has no 3-5
+    curve left (the four of the input are gone)."""
+    r, out = fillet(tmp_path, "half_sphere_box.step", *flags)
+    flat = r["correction"]["mapped"]["flat_corners"]
+    assert flat["solved"] and flat["runs"] >= 4 and flat["turned_vertices"] > 0
+    assert flat["summary"]["meshable"] and flat["summary"]["curves_3_5"] == 0
+    assert (out / "flat_corner_curves.vtk").stat().st_size > 0
+
+
+@pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
 def test_groove_gets_valid_internal_nodes(tmp_path, flags):
     r, out = fillet(tmp_path, "groove.step", *flags)
     check_filleted(r, out)

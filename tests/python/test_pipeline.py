@@ -55,6 +55,15 @@ def test_extrusion_from_python_lists_its_streamlines_and_failures():
     assert r.mesh.num_vertices == r.field.axes.shape[0]  # the new mesh carries the new field
 
 
+def test_fillet_from_python_maps_its_graph_onto_the_original_part():
+    r = framefix.correct(str(SAMPLES / "half_sphere_box.step"), method="fillet")
+    c = r.correction
+    assert c.method == "fillet" and c.remeshed and "CASCADE Topology" in c.filleted_brep
+    assert c.mapped.summary["meshable"] and c.mapped.summary["valence5"] >= 4
+    assert c.flat_corners is not None and c.flat_corners.summary["curves_3_5"] == 0
+    assert r.mesh.num_vertices == r.field.axes.shape[0]  # the run's mesh is the filleted part's
+
+
 def test_blocks_of_the_l_prism_without_correction():
     r = framefix.build_blocks(str(SAMPLES / "l_prism.step"), method="none", size=0.05)
     assert r.correction is None

@@ -168,6 +168,7 @@ class Correction(unittest.TestCase):
         self.assertEqual(len(filleted.Shape.Faces), faces + 1)  # the fillet's face
         self.assertGreater(filleted.Shape.Volume, volume)  # a concave edge gains material
         self.assertEqual((part.Shape.Volume, len(part.Shape.Faces)), (volume, faces))
+        self.check_mapped_curves_on_the_arc(0)
         # A run from the panel on the same analysis replaces the filleted solid.
         solid = shapes.solid_of(part)
         report = runs.run(solid, None, method="fillet")
@@ -182,6 +183,18 @@ class Correction(unittest.TestCase):
         self.assertTrue(filleted[0].isValid())
         self.assertAlmostEqual(filleted[0].Shape.BoundBox.XMin, x_min + 2, places=6)
         self.assertEqual(len(filleted[0].Shape.Faces), faces + 1)
+        self.check_mapped_curves_on_the_arc(2)
+
+    def check_mapped_curves_on_the_arc(self, dx):
+        """The corrected graph mapped onto the user's part: valid, and some of its curve points
+        on the concave arc the fillet replaced (radius 0.5 about x = 1 + dx, y = 1, z = 0.5)."""
+        mapped = [o for o in self.doc.Objects if o.Name.startswith("MappedCurves")]
+        self.assertEqual(len(mapped), 1)
+        self.assertTrue(mapped[0].Valid)
+        self.assertEqual(len(mapped[0].EdgeKinds), len(mapped[0].Shape.Edges))
+        on_arc = [v for v in mapped[0].Shape.Vertexes if abs(v.Point.z - 0.5) < 1e-6 and
+                  abs(((v.Point.x - 1 - dx) ** 2 + (v.Point.y - 1) ** 2) ** 0.5 - 0.5) < 1e-6]
+        self.assertGreater(len(on_arc), 2)
 
 
     def test_extrusions_show_their_streamlines_inside_the_part(self):

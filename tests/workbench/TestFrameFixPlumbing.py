@@ -84,6 +84,26 @@ class Pure(unittest.TestCase):
                                  "correction": {"before": summary, "fillets": [{"edge": "x"}]}})
 
 
+    def test_mapped_graph_and_its_flat_corner_solve_are_listed(self):
+        summary = dict.fromkeys(report.SUMMARY_KEYS, 0)
+        summary.update(meshable=True)
+        flat = dict(summary, curves_3_5=1, meshable=False)
+        r = report.check_report({"version": 1, "singularities": {"summary": summary, "curves": []},
+                                 "correction": {"method": "fillet", "before": summary, "fillets": [],
+                                                "mapped": {"summary": summary, "curves": [],
+                                                           "flat_corners": {"solved": True, "turned_vertices": 15,
+                                                                            "summary": flat}}}})
+        lines = report.fillet_lines(r["correction"])
+        self.assertEqual(len(lines), 2)
+        self.assertTrue(lines[0].startswith("Mapped onto the original part: 0 3-5 curves") and
+                        lines[0].endswith(": hex-meshable"))
+        self.assertIn("(15 edge vertices turned): 1 3-5 curves", lines[1])
+        self.assertTrue(lines[1].endswith("NOT hex-meshable"))
+        with self.assertRaisesRegex(BackendError, r"mapped\.summary"):
+            report.check_report({"version": 1, "singularities": {"summary": summary, "curves": []},
+                                 "correction": {"before": summary, "mapped": {"curves": []}}})
+
+
 class Layers(unittest.TestCase):
     """objects/ (stored in documents) sits below the make layer, panels and commands."""
 

@@ -16,6 +16,7 @@ from .errors import FrameFixError
 from .objects.blocks import Blocks
 from .objects.feature_curves import FeatureCurves
 from .objects.filleted_part import FilletedPart
+from .objects.mapped_curves import MappedCurves
 from .objects.singular_curves import SingularCurves
 from .objects.singular_nodes import SingularNodes
 from .objects.snapped_paths import SnappedPaths
@@ -24,6 +25,7 @@ from .objects.streamlines import Streamlines
 if FreeCAD.GuiUp:
     from .viewproviders.blocks import ViewProviderBlocks
     from .viewproviders.feature_curves import ViewProviderFeatureCurves
+    from .viewproviders.mapped_curves import ViewProviderMappedCurves
     from .viewproviders.singular_curves import ViewProviderSingularCurves
     from .viewproviders.singular_nodes import ViewProviderSingularNodes
     from .viewproviders.snapped_paths import ViewProviderSnappedPaths
@@ -32,13 +34,14 @@ if FreeCAD.GuiUp:
                       SingularNodes: ViewProviderSingularNodes,
                       FeatureCurves: ViewProviderFeatureCurves,
                       SnappedPaths: ViewProviderSnappedPaths, Streamlines: ViewProviderStreamlines,
-                      Blocks: ViewProviderBlocks}
+                      MappedCurves: ViewProviderMappedCurves, Blocks: ViewProviderBlocks}
 else:
     VIEW_PROVIDERS = {}
 
 GROUP_LABEL = "FrameFix analysis of %s"
 CORRECTION_GROUP_LABEL = "FrameFix correction (%s) of %s"
 BLOCKS_GROUP_LABEL = "FrameFix blocks (%s) of %s"
+MAPPED_LABEL = "Curves mapped onto the part"
 
 
 def _add(doc, type_name, name, label, proxy_class):
@@ -146,6 +149,8 @@ def _add_parts(doc, method, blocks):
              _add(doc, "Part::FeaturePython", "FeatureCurves", "Feature curves", FeatureCurves)]
     if corrected and method.startswith("extrude"):
         parts.append(_add(doc, "Part::FeaturePython", "Streamlines", "Streamlines", Streamlines))
+    elif method == "fillet":
+        parts.append(_add(doc, "Part::FeaturePython", "MappedCurves", MAPPED_LABEL, MappedCurves))
     elif corrected:
         parts.append(_add(doc, "Part::FeaturePython", "SnappedPaths", "Snapped paths",
                           SnappedPaths))
@@ -164,17 +169,21 @@ def update_analysis(curves, size, report, digest, method=""):
     with _Transaction(doc, _kind(method, curves.Blocks)):
         curves.Size, curves.Method = float(size or 0.0), method
         runs.store(curves, report, digest)
-        if curves.FilletedBrep and not [o for o in curves.InList if o.Name.startswith("FilletedPart")]:
-            _add_filleted_to_group(curves)
+        if curves.FilletedBrep and not _with_proxy(curves.InList, FilletedPart):
+            _add_to_group(curves, _add_filleted(doc, curves.Source, curves))
+        if method == "fillet" and not _with_proxy(curves.InList, MappedCurves):
+            mapped = _add(doc, "Part::FeaturePython", "MappedCurves", MAPPED_LABEL, MappedCurves)
+            mapped.Analysis = curves
+            _add_to_group(curves, mapped)
         _fade_source(curves, curves.Source)
         _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])
     return curves
 
 
-def _add_filleted_to_group(curves):
-    """A filleted solid for an analysis that had none (a panel run switched it to fillet)."""
+def _add_to_group(curves, obj):
+    """Put a new object of an analysis (a panel run switched its method) into its group."""
     for group in [o for o in curves.InList if o.isDerivedFrom("App::DocumentObjectGroup")]:
-        group.addObject(_add_filleted(curves.Document, curves.Source, curves))
+        group.addObject(obj)
 
 
 def make_blocks(source, size=None, method="snap", report=None, digest=None, backend=None):

@@ -54,6 +54,34 @@ def _feature_curve(f, i):
             "points": _points(f.get("points", []), where)}
 
 
+def _summary(value, where):
+    if not isinstance(value, dict):
+        _fail(where + " is not an object")
+    summary = dict(value)
+    for key in SUMMARY_KEYS:
+        if not isinstance(summary.get(key), int):
+            _fail("%s.%s is not an integer" % (where, key))
+    summary["meshable"] = bool(summary.get("meshable"))
+    return summary
+
+
+def _mapped(m):
+    """The fillet correction's graph on the original part, and its flat-corner re-solve."""
+    if m is None:
+        return None
+    if not isinstance(m, dict):
+        _fail("correction.mapped is not an object")
+    flat = m.get("flat_corners")
+    if isinstance(flat, dict):
+        solved = bool(flat.get("solved"))
+        flat = {"solved": solved, "turned_vertices": int(flat.get("turned_vertices", 0)),
+                "summary": _summary(flat.get("summary"), "correction.mapped.flat_corners.summary")
+                if solved else None}
+    return {"summary": _summary(m.get("summary"), "correction.mapped.summary"),
+            "curves": [_curve(c, i) for i, c in enumerate(m.get("curves") or [])],
+            "flat_corners": flat if isinstance(flat, dict) else None}
+
+
 def check_report(data):
     """The parts of a report dict the workbench uses, checked; raises BackendError."""
     if not isinstance(data, dict):
@@ -63,11 +91,7 @@ def check_report(data):
     sing = data.get("singularities")
     if not isinstance(sing, dict) or not isinstance(sing.get("summary"), dict):
         _fail("singularities.summary is missing")
-    summary = dict(sing["summary"])
-    for key in SUMMARY_KEYS:
-        if not isinstance(summary.get(key), int):
-            _fail("singularities.summary.%s is not an integer" % key)
-    summary["meshable"] = bool(summary.get("meshable"))
+    summary = _summary(sing["summary"], "singularities.summary")
     curves = [_curve(c, i) for i, c in enumerate(sing.get("curves") or [])]
     nodes = [_node(n, i) for i, n in enumerate(sing.get("nodes") or [])]
     features = [_feature_curve(f, i) for i, f in enumerate(data.get("feature_curves") or [])]
@@ -105,7 +129,7 @@ def _correction(c):
     return {"method": str(c.get("method", "")), "before": dict(c["before"]),
             "changed_curves": int(c.get("changed_curves", 0)), "snapped_paths": paths,
             "fillets": fillets, "notes": [str(n) for n in c.get("notes") or []],
-            "streamlines": streamlines, "failures": failures}
+            "streamlines": streamlines, "failures": failures, "mapped": _mapped(c.get("mapped"))}
 
 
 BLOCK_COUNTS = ("count", "valid", "conforming_pairs", "pairs", "flat_corners", "flat_edges")
@@ -193,7 +217,21 @@ def fillet_lines(correction):
         return []
     lines = ["Edge%d filleted, radius %.4g" % (f["edge"], f["radius"]) if f["done"] else
              "Edge%d not filleted: %s" % (f["edge"], f["reason"]) for f in correction.get("fillets", [])]
-    return lines + list(correction.get("notes", []))
+    return lines + list(correction.get("notes", [])) + mapped_lines(correction.get("mapped"))
+
+
+def mapped_lines(mapped):
+    """What the map back onto the original part gives: its graph, then the flat-corner re-solve."""
+    if not mapped:
+        return []
+    lines = ["Mapped onto the original part: %s" % summary_text(mapped["summary"])]
+    flat = mapped.get("flat_corners") or {}
+    if flat.get("solved"):
+        lines.append("Original part solved again with flat corners (%d edge vertices turned): %s"
+                     % (flat["turned_vertices"], summary_text(flat["summary"])))
+    elif flat:
+        lines.append("No mapped valence-5 curve lies on a filleted edge: no flat corner to solve")
+    return lines
 
 
 def extrusion_lines(correction):

@@ -39,6 +39,25 @@ void keep_only_if_not_worse(Correction& c, MeshStage& mesh_before, Constraints& 
     if (c.method.rfind("extrude", 0) == 0) c.extrusion.failures.push_back({"result", why});
 }
 
+// The mapped graph as a correction of the original part: flat corners where its valence-5 curves
+// lie on a filleted edge, then a re-solve on the original mesh.
+FlatCornerSolve solve_flat_corners(const MeshStage& original, const Constraints& constraints, const MappedGraph& mapped,
+                                   const RunOptions& options) {
+    const auto t0 = std::chrono::steady_clock::now();
+    FlatCornerSolve s;
+    const std::vector<EdgeRun> runs = valence5_runs(mapped);
+    s.runs = int(runs.size());
+    FlatCorners f = flat_corner_constraints(original.tets, original.features, constraints, runs);
+    s.turned_vertices = f.turned_vertices;
+    if (s.turned_vertices > 0) {
+        const FieldStage field = solve_field(original, std::move(f.constraints), options, {});
+        s.graph = find_singularities(original, field, options);
+        s.solved = true;
+    }
+    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return s;
+}
+
 }  // namespace
 
 Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
@@ -68,6 +87,7 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
         if (mesh_before) keep_only_if_not_worse(c, *mesh_before, *constraints_before, mesh, field, graph);
         if (c.filleted && model) {
             MappedGraph m = map_back(*model, c.fillets, graph);
+            c.flat_corners = solve_flat_corners(*mesh_before, *constraints_before, m, options);
             c.mapped = std::move(m.graph);
             c.mapped_points = m.moved_points;
             c.mapped_nodes = m.moved_nodes;

@@ -26,13 +26,17 @@ MappedGraph map_back(const BrepModel& original, const std::vector<FilletOutcome>
                      const SingularityGraph& filleted) {
     MappedGraph m;
     m.graph = filleted;
-    for (SingularCurve& c : m.graph.curves)
+    for (SingularCurve& c : m.graph.curves) {
+        std::vector<int>& edge = m.point_edge.emplace_back(size_t(c.points.rows()), 0);
         for (int i = 0; i < c.points.rows(); ++i) {
             Eigen::Vector3d q;
-            if (onto_edge(original, fillets, c.points.row(i).transpose(), kPointReach, &q) < 0) continue;
+            const int f = onto_edge(original, fillets, c.points.row(i).transpose(), kPointReach, &q);
+            if (f < 0) continue;
             c.points.row(i) = q.transpose();
+            edge[size_t(i)] = fillets[size_t(f)].edge;
             ++m.moved_points;
         }
+    }
     SingularitySummary& s = m.graph.summary;
     for (SingularNode& n : m.graph.nodes) {
         Eigen::Vector3d q;
@@ -45,6 +49,22 @@ MappedGraph map_back(const BrepModel& original, const std::vector<FilletOutcome>
     }
     s.meshable = s.curves_3_5 == 0 && s.invalid_nodes == 0;
     return m;
+}
+
+std::vector<EdgeRun> valence5_runs(const MappedGraph& mapped) {
+    std::vector<EdgeRun> runs;
+    for (size_t c = 0; c < mapped.graph.curves.size(); ++c) {
+        const SingularCurve& curve = mapped.graph.curves[c];
+        if (curve.kind != CurveKind::Valence5) continue;
+        const std::vector<int>& edge = mapped.point_edge[c];
+        for (size_t i = 0; i < edge.size();) {
+            size_t j = i;
+            while (j < edge.size() && edge[j] == edge[i]) ++j;
+            if (edge[i] > 0 && j - i >= 2) runs.push_back({edge[i], curve.points.middleRows(Eigen::Index(i), Eigen::Index(j - i))});
+            i = j;
+        }
+    }
+    return runs;
 }
 
 }  // namespace framefix

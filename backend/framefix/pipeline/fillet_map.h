@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "framefix/brep/fillet.h"
+#include "framefix/corrections/flat_corners.h"
 #include "framefix/singularities/singularity_graph.h"
 
 namespace framefix {
@@ -12,6 +13,8 @@ struct MappedGraph {
     SingularityGraph graph;  // points and nodes on the original part; kinds as on the filleted one
     int moved_points = 0;    // curve points pulled onto a filleted edge
     int moved_nodes = 0;     // nodes on a fillet, now on the concave edge it replaced
+    // Per curve, per point: the original part's edge (1-based) the point was moved onto, 0 if none.
+    std::vector<std::vector<int>> point_edge;
 };
 
 // Curve points within one radius of a filleted edge (original part's Edge<i>) go to their closest
@@ -20,5 +23,9 @@ struct MappedGraph {
 // (docs/algorithms.md#node-validity).
 MappedGraph map_back(const BrepModel& original, const std::vector<FilletOutcome>& fillets,
                      const SingularityGraph& filleted);
+
+// The stretches of the mapped valence-5 curves that lie on a filleted edge: there the original
+// part gets flat corners (corrections/flat_corners.h).
+std::vector<EdgeRun> valence5_runs(const MappedGraph& mapped);
 
 }  // namespace framefix

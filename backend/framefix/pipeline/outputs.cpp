@@ -176,6 +176,11 @@ std::vector<std::string> write_outputs(const RunResult& r, const std::string& di
             write_vtk(curves_grid(*correction->mapped), path("mapped_curves.vtk"), "FrameFix corrected curves mapped onto the original part");
             written.push_back(path("mapped_curves.vtk"));
         }
+        if (correction->flat_corners && correction->flat_corners->solved) {
+            write_vtk(curves_grid(correction->flat_corners->graph), path("flat_corner_curves.vtk"),
+                      "FrameFix original part's curves, solved again with flat corners under the mapped curves");
+            written.push_back(path("flat_corner_curves.vtk"));
+        }
         if (correction->method.rfind("extrude", 0) == 0) {
             write_vtk(streamlines_grid(correction->extrusion), path("streamlines.vtk"), "FrameFix extrusion streamlines");
             written.push_back(path("streamlines.vtk"));

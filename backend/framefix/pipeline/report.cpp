@@ -86,6 +86,22 @@ json extrusion_json(const Correction& c) {
             {"extrusion_seconds", c.extrusion_seconds}};
 }
 
+// Fillet: the corrected graph on the original part, and the original part solved again with it.
+json mapped_json(const Correction& c) {
+    if (!c.mapped) return nullptr;
+    const json graph = singularities_json(*c.mapped);
+    json j = {{"summary", summary_json(c.mapped->summary)}, {"moved_points", c.mapped_points},
+              {"moved_nodes", c.mapped_nodes}, {"curves", graph["curves"]}, {"nodes", graph["nodes"]}};
+    if (c.flat_corners) {
+        const FlatCornerSolve& f = *c.flat_corners;
+        j["flat_corners"] = {{"solved", f.solved}, {"runs", f.runs}, {"turned_vertices", f.turned_vertices},
+                             {"summary", f.solved ? summary_json(f.graph.summary) : json(nullptr)},
+                             {"curves", f.solved ? singularities_json(f.graph)["curves"] : json::array()},
+                             {"seconds", f.seconds}};
+    }
+    return j;
+}
+
 json correction_json(const Correction& c, const SingularitySummary& after) {
     json paths = json::array();
     for (const auto& p : c.snap.paths) {
@@ -105,12 +121,7 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"notes", c.notes},
             {"remeshed", c.remeshed},
             {"kept", c.changed && !c.worse_dropped},
-            {"mapped", c.mapped ? json{{"summary", summary_json(c.mapped->summary)},
-                                       {"moved_points", c.mapped_points},
-                                       {"moved_nodes", c.mapped_nodes},
-                                       {"curves", singularities_json(*c.mapped)["curves"]},
-                                       {"nodes", singularities_json(*c.mapped)["nodes"]}}
-                                : json(nullptr)},
+            {"mapped", mapped_json(c)},
             {"fillet_seconds", c.fillet_seconds},
             {"remesh_seconds", c.remesh_seconds},
             {"before", summary_json(c.before)},

@@ -36,6 +36,16 @@ struct FieldStage {             // boundary conditions and the frame field solve
     FrameField frames;
 };
 
+// Fillet: the original part's field solved again with flat corners under the mapped valence-5
+// curves (corrections/flat_corners.h), on the original mesh.
+struct FlatCornerSolve {
+    bool solved = false;        // false when no mapped valence-5 curve lies on a filleted edge
+    int runs = 0;               // stretches of mapped valence-5 curves on filleted edges
+    int turned_vertices = 0;    // edge vertices whose Dirichlet frame turned by 45 deg
+    SingularityGraph graph;     // the original part's graph after the re-solve
+    double seconds = 0;
+};
+
 // What a correction did. The run's field and singularities are the corrected ones; the field
 // and graph that were corrected are kept here.
 struct Correction {
@@ -58,6 +68,7 @@ struct Correction {
     bool remeshed = false;          // the mesh was replaced (field_before lives on the old one)
     std::optional<SingularityGraph> mapped;  // fillet: the corrected graph on the original part
     int mapped_points = 0, mapped_nodes = 0;  // fillet: curve points and nodes moved onto the concave edges
+    std::optional<FlatCornerSolve> flat_corners;  // fillet: the mapped graph offered to the original part
     double fillet_seconds = 0;      // choosing the edges and filleting (OCCT), before the remesh
     double remesh_seconds = 0;      // features and tets of the filleted solid; extrusions: TetGen with the points
     bool changed = false;           // the method changed the set-up; field and graph were re-solved

@@ -3,6 +3,13 @@ from .. import style
 from .base import ViewProviderBase
 
 
+def colour_by_kind(obj, prop):
+    """One colour per edge from obj.EdgeKinds, once Shape and EdgeKinds agree."""
+    if prop in ("EdgeKinds", "Shape") and len(obj.EdgeKinds) == len(obj.Shape.Edges):
+        if obj.EdgeKinds:
+            obj.ViewObject.LineColorArray = style.color_list(obj.EdgeKinds, style.CURVE_COLORS)
+
+
 class ViewProviderSingularCurves(ViewProviderBase):
     ICON = "FrameFix_Analyze"
 
@@ -11,9 +18,7 @@ class ViewProviderSingularCurves(ViewProviderBase):
         vobj.PointSize = 1.0
 
     def updateData(self, obj, prop):
-        if prop in ("EdgeKinds", "Shape") and len(obj.EdgeKinds) == len(obj.Shape.Edges):
-            if obj.EdgeKinds:
-                obj.ViewObject.LineColorArray = style.color_list(obj.EdgeKinds, style.CURVE_COLORS)
+        colour_by_kind(obj, prop)
 
     def onDelete(self, vobj, subelements):
         """Give the analysed part back the transparency it had."""
