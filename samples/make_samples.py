@@ -145,6 +145,14 @@ def groove_filleted():
     return part.makeFillet(0.05, circle_edges(part, 0.4, 0.8) + circle_edges(part, 0.6, 0.8))
 
 
+def groove_wide_filleted():
+    """The paper's Fig. 5b proper: every curve of groove_wide's groove, floor arcs (concave) and
+    rims (convex), filleted, r = 0.08: the groove becomes smooth."""
+    part = groove_wide()
+    arcs = [e for r in (0.3, 0.7) for z in (0.7, 1.0) for e in circle_edges(part, r, z)]
+    return part.makeFillet(0.08, arcs)
+
+
 def cube():
     return Part.makeBox(1, 1, 1)
 
@@ -160,7 +168,8 @@ def l_prism():
 
 SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism,
            notch_filleted, half_sphere_box_filleted, groove_filleted,
-           notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow]
+           notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow,
+           groove_wide_filleted]
 
 
 def write_bad_inputs():
