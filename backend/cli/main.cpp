@@ -22,6 +22,7 @@ struct Args {
     std::string part, out;
     double size = 0, size_factor = 1;
     int threads = 0;
+    double budget_s = 0;
     bool quiet = false;
     std::string method = framefix::correction_methods()[0].name;
 };
@@ -50,6 +51,7 @@ framefix::RunOptions options_from(const Args& a, framefix::Stage stop_after) {
     framefix::RunOptions o;
     o.stop_after = stop_after;
     o.correction = a.method;
+    o.budget_s = a.budget_s;
     o.mesh.size = a.size;
     o.size_factor = a.size_factor;
     o.threads = a.threads;
@@ -103,6 +105,9 @@ int main(int argc, char** argv) {
     }
     commands[2].app->add_option("--method", a.method, method_help(false));
     commands[3].app->add_option("--method", a.method, "correction before the blocks: " + method_help(true));
+    for (int k : {2, 3})
+        commands[k].app->add_option("--budget-s", a.budget_s, "method auto: seconds for its tries (default: 120 per 50k tets)")
+            ->check(CLI::PositiveNumber);
     auto* info = app.add_subcommand("info", "print the defaults and the correction methods as JSON");
     try {
         app.parse(argc, argv);

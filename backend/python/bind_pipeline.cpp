@@ -21,8 +21,9 @@ Stage stage_named(const std::string& name) {
 }
 
 RunOptions make_options(const std::string& stop_after, const std::string& method, double size, double size_factor,
-                        int threads) {
+                        int threads, double budget_s) {
     RunOptions o;
+    o.budget_s = budget_s;
     o.stop_after = stage_named(stop_after);
     o.correction = method;
     o.mesh.size = size;
@@ -39,6 +40,20 @@ py::object optional_of(const std::optional<T>& v) {
 void bind_correction(py::module_& m) {
     py::class_<Correction>(m, "Correction", "What a correction did; the run's field and graph are the corrected ones")
         .def_readonly("method", &Correction::method)
+        .def_readonly("chosen", &Correction::chosen, "method auto: the method or combination kept, '' if none helped")
+        .def_property_readonly("tries", [](const Correction& c) {
+            py::list out;
+            for (const CorrectionTry& t : c.tries)
+                out.append(py::dict(py::arg("method") = t.method, py::arg("ran") = t.ran, py::arg("kept") = t.kept,
+                                    py::arg("after") = summary_dict(t.after), py::arg("seconds") = t.seconds,
+                                    py::arg("reason") = t.reason));
+            return out;
+        }, "method auto: one dict per try (method, ran, kept, after, seconds, reason)")
+        .def_property_readonly("snap_rounds", [](const Correction& c) {
+            py::list out;
+            for (const SingularitySummary& s : c.snap_rounds) out.append(summary_dict(s));
+            return out;
+        }, "the summary after each snapping round")
         .def_readonly("changed", &Correction::changed)
         .def_readonly("rotated_fraction", &Correction::rotated_fraction, "vertices whose frame turned > 10 deg")
         .def_readonly("graph_before", &Correction::graph_before)
@@ -139,19 +154,19 @@ void bind_pipeline(py::module_& m) {
     m.def(
         "run_file",
         [](const std::string& path, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads) {
-            return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads));
+           double size_factor, int threads, double budget_s) {
+            return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads, budget_s));
         },
-        py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "snap", py::arg("size") = 0.0,
-        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
+        py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
+        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0, py::call_guard<py::gil_scoped_release>());
     m.def(
         "run_shape",
         [](const BrepModel& shape, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads) {
-            return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads));
+           double size_factor, int threads, double budget_s) {
+            return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads, budget_s));
         },
-        py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "snap", py::arg("size") = 0.0,
-        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::call_guard<py::gil_scoped_release>());
+        py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
+        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0, py::call_guard<py::gil_scoped_release>());
     m.def("info_json", &info_json, "`framefix info`: defaults and correction methods, as JSON text");
 }
 

@@ -11,6 +11,7 @@ namespace framefix::detail {
 namespace {
 
 constexpr double kRotationThresholdDeg = 10;  // "frames turned" in the report counts above this
+constexpr int kMaxSnapRounds = 4;  // snap rounds per run; measured: a third round rarely helps
 
 int defects(const SingularitySummary& s) { return s.curves_3_5 + s.invalid_nodes; }
 
@@ -58,11 +59,36 @@ FlatCornerSolve solve_flat_corners(const MeshStage& original, const Constraints&
     return s;
 }
 
+// Snapping again on the re-solved graph while each round lowers the 3-5 curves plus invalid nodes:
+// a re-solve can leave or create 3-5 curves next to the snapped ones. A round that does not
+// lower them is undone and ends the rounds; each round's summary is kept.
+void more_snap_rounds(Correction& c, const MeshStage& mesh, FieldStage& field, SingularityGraph& graph,
+                      const RunOptions& options) {
+    c.snap_rounds.push_back(graph.summary);
+    for (int round = 1; round < kMaxSnapRounds && !graph.summary.meshable; ++round) {
+        SnapResult s = snap_three_five_curves(mesh.tets, mesh.topology, mesh.features, field.constraints, field.frames,
+                                              graph, options.snap);
+        if (s.snapped_curve_ids.empty()) break;
+        FieldStage f = solve_field(mesh, s.constraints, options, {});
+        SingularityGraph g = find_singularities(mesh, f, options);
+        c.snap_rounds.push_back(g.summary);
+        if (defects(g.summary) >= defects(graph.summary)) break;
+        for (SnappedPath& p : s.paths) c.snap.paths.push_back(std::move(p));
+        c.snap.snapped_curve_ids.insert(c.snap.snapped_curve_ids.end(), s.snapped_curve_ids.begin(), s.snapped_curve_ids.end());
+        c.snap.snapped_curves += s.snapped_curves;
+        c.snap.freed_vertices += s.freed_vertices;
+        c.snap.constraints = std::move(s.constraints);
+        field = std::move(f);
+        graph = std::move(g);
+    }
+}
+
 }  // namespace
 
 Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
                    const BrepModel* model) {
     const CorrectionMethod& method = find_correction_method(options.correction);
+    if (!method.apply) return correct_auto(mesh, field, graph, options, model);
     const auto t0 = std::chrono::steady_clock::now();
     Correction c;
     c.method = method.name;
@@ -82,6 +108,7 @@ Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, 
         field = solve_field(mesh, std::move(field.constraints), options, sink ? inner : ProgressSink{});
         report(options.progress, "correct", 0.9);
         graph = find_singularities(mesh, field, options);
+        if (method.name == "snap") more_snap_rounds(c, mesh, field, graph, options);
         if (!c.remeshed)  // frames of another mesh cannot be compared vertex by vertex
             c.rotated_fraction = rotated_fraction(c.field_before, field.frames, kRotationThresholdDeg, options.threads);
         if (mesh_before) keep_only_if_not_worse(c, *mesh_before, *constraints_before, mesh, field, graph);

@@ -121,7 +121,9 @@ std::string names() {
 
 const std::vector<CorrectionMethod>& correction_methods() {
     static const std::vector<CorrectionMethod> methods = {
-        {"snap", "snap 3-5 curves onto the boundary (the paper's recommendation)", true, &apply_snap},
+        {"auto", "try the methods, cheapest first and the fillet last, and keep the best (never worse than the input)",
+         true, nullptr, true},
+        {"snap", "snap 3-5 curves onto the boundary (the paper's recommendation)", true, &apply_snap, true},
         {"fillet", "insert fillets on the B-rep along the concave feature curves that cause 3-5 curves", true, &apply_fillet, true},
         {"extrude-curves", "extrude the concave feature curves into the volume along the field's stable direction", true, &apply_extrude_curves, true},
         {"extrude-nodes", "extrude the ends of the 3-5 curves into the volume along streamlines of the field", true, &apply_extrude_nodes, true},
@@ -133,8 +135,7 @@ const CorrectionMethod& find_correction_method(const std::string& name) {
     for (const auto& m : correction_methods()) {
         if (m.name != name) continue;
         if (!m.available)
-            throw Error("correct", "method '" + name + "' is not available yet; use --method " + correction_methods()[0].name +
-                                       " (the paper's recommendation)");
+            throw Error("correct", "method '" + name + "' is not available yet; use --method " + correction_methods()[0].name);
         return m;
     }
     throw Error("correct", "unknown method '" + name + "'; use " + names());

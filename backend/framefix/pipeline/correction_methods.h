@@ -23,14 +23,15 @@ struct CorrectionMethod {
     std::string name;
     std::string description;  // one line, shown by `framefix info` and the workbench
     bool available = false;   // implemented in this build
-    // Returns true when it changed the set-up (the pipeline then re-solves); null when unavailable.
+    // Returns true when it changed the set-up (the pipeline then re-solves); null for auto, which
+    // runs the others (correction_auto.cpp).
     bool (*apply)(CorrectionContext&) = nullptr;
     // The result is dropped, and the input's mesh, field and graph kept, when it has more 3-5
     // curves plus invalid nodes than the input (the reason goes to the failures).
     bool never_worse = false;
 };
 
-// Every method the paper describes, in the order the user sees them; the first is the default.
+// auto, then every method the paper describes, in the order the user sees them; the first is the default.
 const std::vector<CorrectionMethod>& correction_methods();
 
 // The method called `name`; throws framefix::Error("correct") when unknown or not available.

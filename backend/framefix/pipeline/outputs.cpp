@@ -181,7 +181,7 @@ std::vector<std::string> write_outputs(const RunResult& r, const std::string& di
                       "FrameFix original part's curves, solved again with flat corners under the mapped curves");
             written.push_back(path("flat_corner_curves.vtk"));
         }
-        if (correction->method.rfind("extrude", 0) == 0) {
+        if (correction->method.rfind("extrude", 0) == 0 || correction->chosen.rfind("extrude", 0) == 0) {
             write_vtk(streamlines_grid(correction->extrusion), path("streamlines.vtk"), "FrameFix extrusion streamlines");
             written.push_back(path("streamlines.vtk"));
         }

@@ -102,6 +102,19 @@ json mapped_json(const Correction& c) {
     return j;
 }
 
+// Method auto: every try with its result; the snap rounds of any method that snapped.
+json search_json(const Correction& c) {
+    json tries = json::array(), rounds = json::array();
+    for (const CorrectionTry& t : c.tries)
+        tries.push_back({{"method", t.method}, {"ran", t.ran}, {"kept", t.kept}, {"after", summary_json(t.after)},
+                         {"rotated_fraction_10deg", t.rotated_fraction}, {"remeshed", t.remeshed},
+                         {"seconds", t.seconds}, {"reason", t.reason}});
+    for (const SingularitySummary& r : c.snap_rounds) rounds.push_back(summary_json(r));
+    json j = {{"snap_rounds", rounds}};
+    if (c.method == "auto") j.update({{"chosen", c.chosen}, {"tries", tries}, {"budget_s", c.budget_s}});
+    return j;
+}
+
 json correction_json(const Correction& c, const SingularitySummary& after) {
     json paths = json::array();
     for (const auto& p : c.snap.paths) {
@@ -133,7 +146,8 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"seconds", c.seconds},
             {"snapped_paths", paths},
             {"curves_before", singularities_json(c.graph_before)["curves"]}};
-    if (c.method.rfind("extrude", 0) == 0) j.update(extrusion_json(c));
+    if (c.method.rfind("extrude", 0) == 0 || c.chosen.rfind("extrude", 0) == 0) j.update(extrusion_json(c));
+    j.update(search_json(c));
     return j;
 }
 

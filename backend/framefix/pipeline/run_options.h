@@ -14,7 +14,9 @@ constexpr const char* kNoCorrection = "none";  // RunOptions::correction that sk
 
 struct RunOptions {
     Stage stop_after = Stage::singularities;
-    std::string correction = "snap";  // a registered method (correction_methods.h) or kNoCorrection
+    std::string correction = "auto";  // a registered method (correction_methods.h) or kNoCorrection
+    // Method auto: time budget for its tries, seconds; 0 = kAutoBudgetSeconds per kDefaultTargetTets tets.
+    double budget_s = 0;
     MeshOptions mesh;
     FeatureOptions features;
     FieldOptions field;

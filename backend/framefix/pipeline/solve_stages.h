@@ -19,4 +19,8 @@ SingularityGraph find_singularities(const MeshStage& mesh, const FieldStage& fie
 Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
                    const BrepModel* model);
 
+// Method auto (correction_auto.cpp): tries the other methods on copies and keeps the best.
+Correction correct_auto(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
+                        const BrepModel* model);
+
 }  // namespace framefix::detail

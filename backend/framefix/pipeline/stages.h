@@ -46,6 +46,18 @@ struct FlatCornerSolve {
     double seconds = 0;
 };
 
+// Method auto: one method (or a combination, "fillet+snap") tried on the input.
+struct CorrectionTry {
+    std::string method;
+    bool ran = false;            // false: skipped (the reason says why: budget, not applicable)
+    bool kept = false;           // it changed the part and its result was not dropped as worse
+    SingularitySummary after;    // the input's summary when it did not run or was dropped
+    double rotated_fraction = 0; // same-mesh methods only (snap), else 0
+    bool remeshed = false;
+    double seconds = 0;
+    std::string reason;
+};
+
 // What a correction did. The run's field and singularities are the corrected ones; the field
 // and graph that were corrected are kept here.
 struct Correction {
@@ -71,6 +83,13 @@ struct Correction {
     std::optional<FlatCornerSolve> flat_corners;  // fillet: the mapped graph offered to the original part
     double fillet_seconds = 0;      // choosing the edges and filleting (OCCT), before the remesh
     double remesh_seconds = 0;      // features and tets of the filleted solid; extrusions: TetGen with the points
+    // Method snap: the summary after each round (the re-solve of one snapping; a round that does
+    // not lower the 3-5 curves plus invalid nodes is not kept and ends the rounds).
+    std::vector<SingularitySummary> snap_rounds;
+    // Method auto: the method or combination kept ("" when nothing helped), every try, the budget.
+    std::string chosen;
+    std::vector<CorrectionTry> tries;
+    double budget_s = 0;
     bool changed = false;           // the method changed the set-up; field and graph were re-solved
     bool worse_dropped = false;     // its result was worse than the input and was dropped (never_worse)
     double rotated_fraction = 0;    // vertices whose frame turned by more than 10 degrees
