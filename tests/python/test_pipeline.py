@@ -34,7 +34,7 @@ def test_cube_analysis_has_no_singular_curve():
 
 
 def test_correct_notch_keeps_what_it_corrected():
-    r = framefix.correct(NOTCH)
+    r = framefix.correct(NOTCH, method="snap")
     c = r.correction
     assert c.method == "snap" and c.changed
     assert c.before["curves_3_5"] == 1 and c.graph_before.summary["curves_3_5"] == 1

@@ -263,9 +263,10 @@ class BackendInfo(unittest.TestCase):
         from framefix_wb import runs
         info = runs.backend_info()
         methods = {m["name"]: m["available"] for m in info["correction_methods"]}
-        self.assertEqual(methods, {"snap": True, "fillet": True, "extrude-curves": True,
+        self.assertEqual(methods, {"auto": True, "snap": True, "fillet": True, "extrude-curves": True,
                                    "extrude-nodes": True})
-        self.assertEqual(info["block_methods"], ["snap", "fillet", "extrude-curves", "extrude-nodes", "none"])
+        self.assertEqual(info["block_methods"], ["auto", "snap", "fillet", "extrude-curves", "extrude-nodes",
+                                                 "none"])
         self.assertEqual(info["default_target_tets"], 50000)
 
     def test_an_unknown_method_is_refused_before_a_run(self):

@@ -136,8 +136,8 @@ class BackendInfo(unittest.TestCase):
         first = runs.backend_info()
         self.assertIs(runs.backend_info(), first)
         self.assertEqual([m["name"] for m in first["correction_methods"]],
-                         ["snap", "fillet", "extrude-curves", "extrude-nodes"])
-        self.assertEqual(first["block_methods"], ["snap", "none"])
+                         ["auto", "snap", "fillet", "extrude-curves", "extrude-nodes"])
+        self.assertEqual(first["block_methods"], ["auto", "snap", "none"])
         self.assertEqual(first["default_target_tets"], 50000)
 
     def test_backend_without_info_is_a_clear_error(self):
@@ -444,7 +444,7 @@ class BlocksPlumbing(unittest.TestCase):
         self.assertEqual(list(blocks.BlockValid), [1, 0])
         self.assertEqual(blocks.Summary, "2 blocks, 1 valid, 0/1 pairs conforming, 1 flat edge")
         group = blocks.getParentGroup()
-        self.assertEqual(group.Label, "FrameFix blocks (snap) of Box")
+        self.assertEqual(group.Label, "FrameFix blocks (auto: snap) of Box")  # auto kept snap
         names = sorted(type(o.Proxy).__name__ for o in group.Group)
         self.assertEqual(names, ["Blocks", "FeatureCurves", "SingularCurves", "SingularNodes",
                                  "SnappedPaths"])

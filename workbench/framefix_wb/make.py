@@ -94,15 +94,15 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
 
     `size` None (stored as Size 0) lets the backend pick it. Without `report` the backend
     runs first (synchronously). With it, `digest` must be runs.input_digest() of the solid,
-    size, method and blocks that report was computed from. With `method` ("snap", ...), a
+    size, method and blocks that report was computed from. With `method` ("auto", "snap", ...), a
     correction: the curves are those after correcting, Before35 counts the 3-5 curves before.
-    With `blocks` (method "snap", the default, or "none"), the part cut into blocks too: a
+    With `blocks` (method "auto", the default, another method, or "none"), the part cut into blocks too: a
     Blocks object (the tets coloured by block) beside the curves.
     """
     solid = shapes.solid_of(source)
     size = float(size or 0.0)
     if blocks:
-        method = method or "snap"
+        method = method or "auto"
     if report is None:
         report = runs.run(solid, size or None, method or None, blocks, backend)
         digest = runs.input_digest(solid, size, method, blocks)
@@ -112,8 +112,8 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
     with _Transaction(doc, _kind(method, blocks)):
         group = doc.addObject("App::DocumentObjectGroup", "FrameFixBlocks" if blocks else
                               "FrameFixCorrection" if method else "FrameFixAnalysis")
-        group.Label = _group_label(source, method, blocks)
-        curves, parts = _add_parts(doc, method, blocks)
+        group.Label = _group_label(source, _method_label(method, report), blocks)
+        curves, parts = _add_parts(doc, method, blocks, report)
         curves.Source, curves.Size, curves.Blocks, curves.Method = source, size, blocks, method
         runs.store(curves, report, digest)
         if curves.FilletedBrep:
@@ -133,13 +133,42 @@ def _add_filleted(doc, source, curves):
     return obj
 
 
+def _method_label(method, report):
+    """"auto: fillet+snap" for auto (what it kept), else the method."""
+    chosen = ((report or {}).get("correction") or {}).get("chosen") or ""
+    return "%s: %s" % (method, chosen) if method == "auto" and chosen else method
+
+
 def _group_label(source, method, blocks):
     label = shapes.label_of(source)
     return (BLOCKS_GROUP_LABEL % (method, label) if blocks else
             CORRECTION_GROUP_LABEL % (method, label) if method else GROUP_LABEL % label)
 
 
-def _add_parts(doc, method, blocks):
+def _methods_run(method, report):
+    """The methods whose results a run holds: auto's chosen one(s) ("fillet+snap"), or `method`."""
+    if method == "auto":
+        chosen = ((report or {}).get("correction") or {}).get("chosen") or ""
+        return [m for m in chosen.split("+") if m]
+    return [method] if method and method != "none" else []
+
+
+# What each method adds to the document beside the curves: (name, label, proxy).
+_METHOD_OBJECTS = {"snap": ("SnappedPaths", "Snapped paths", SnappedPaths),
+                   "fillet": ("MappedCurves", MAPPED_LABEL, MappedCurves),
+                   "extrude-nodes": ("Streamlines", "Streamlines", Streamlines),
+                   "extrude-curves": ("Streamlines", "Streamlines", Streamlines)}
+
+
+def _method_objects(methods):
+    found = []
+    for m in methods:
+        if m in _METHOD_OBJECTS and _METHOD_OBJECTS[m] not in found:
+            found.append(_METHOD_OBJECTS[m])
+    return found
+
+
+def _add_parts(doc, method, blocks, report):
     """The curves object and the objects reading its report; returns (curves, all of them)."""
     corrected = method and method != "none"
     curves = _add(doc, "Part::FeaturePython", "SingularCurves",
@@ -147,13 +176,8 @@ def _add_parts(doc, method, blocks):
     parts = [curves, _add(doc, "Part::FeaturePython", "SingularNodes", "Singular nodes",
                           SingularNodes),
              _add(doc, "Part::FeaturePython", "FeatureCurves", "Feature curves", FeatureCurves)]
-    if corrected and method.startswith("extrude"):
-        parts.append(_add(doc, "Part::FeaturePython", "Streamlines", "Streamlines", Streamlines))
-    elif method == "fillet":
-        parts.append(_add(doc, "Part::FeaturePython", "MappedCurves", MAPPED_LABEL, MappedCurves))
-    elif corrected:
-        parts.append(_add(doc, "Part::FeaturePython", "SnappedPaths", "Snapped paths",
-                          SnappedPaths))
+    for name, label, proxy in _method_objects(_methods_run(method, report)):
+        parts.append(_add(doc, "Part::FeaturePython", name, label, proxy))
     if blocks:
         parts.append(_add(doc, "Fem::FemMeshObjectPython", "Blocks", "Blocks", Blocks))
     for part in parts[1:]:
@@ -171,10 +195,11 @@ def update_analysis(curves, size, report, digest, method=""):
         runs.store(curves, report, digest)
         if curves.FilletedBrep and not _with_proxy(curves.InList, FilletedPart):
             _add_to_group(curves, _add_filleted(doc, curves.Source, curves))
-        if method == "fillet" and not _with_proxy(curves.InList, MappedCurves):
-            mapped = _add(doc, "Part::FeaturePython", "MappedCurves", MAPPED_LABEL, MappedCurves)
-            mapped.Analysis = curves
-            _add_to_group(curves, mapped)
+        for name, label, proxy in _method_objects(_methods_run(method, report)):
+            if not _with_proxy(curves.InList, proxy):
+                obj = _add(doc, "Part::FeaturePython", name, label, proxy)
+                obj.Analysis = curves
+                _add_to_group(curves, obj)
         _fade_source(curves, curves.Source)
         _recompute(doc, [curves] + [o for o in curves.InList if hasattr(o, "Analysis")])
     return curves
@@ -186,8 +211,8 @@ def _add_to_group(curves, obj):
         group.addObject(obj)
 
 
-def make_blocks(source, size=None, method="snap", report=None, digest=None, backend=None):
-    """make_analysis with blocks: correct (`method` snap, or none), cut into blocks; returns
+def make_blocks(source, size=None, method="auto", report=None, digest=None, backend=None):
+    """make_analysis with blocks: correct (`method`, auto by default, or none), cut into blocks; returns
     the Blocks object (its Analysis is the curves object owning the run)."""
     curves = make_analysis(source, size, report, digest, backend, method, blocks=True)
     return blocks_of(curves)

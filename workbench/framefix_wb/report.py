@@ -65,6 +65,18 @@ def _summary(value, where):
     return summary
 
 
+def _tries(tries):
+    """Method auto's tries: method, ran, kept, after (a summary), seconds, reason."""
+    out = []
+    for i, t in enumerate(tries or []):
+        if not isinstance(t, dict) or not isinstance(t.get("method"), str):
+            _fail("correction.tries[%d].method is not a string" % i)
+        out.append({"method": t["method"], "ran": bool(t.get("ran")), "kept": bool(t.get("kept")),
+                    "after": _summary(t.get("after"), "correction.tries[%d].after" % i),
+                    "seconds": float(t.get("seconds", 0)), "reason": str(t.get("reason", ""))})
+    return out
+
+
 def _mapped(m):
     """The fillet correction's graph on the original part, and its flat-corner re-solve."""
     if m is None:
@@ -129,7 +141,8 @@ def _correction(c):
     return {"method": str(c.get("method", "")), "before": dict(c["before"]),
             "changed_curves": int(c.get("changed_curves", 0)), "snapped_paths": paths,
             "fillets": fillets, "notes": [str(n) for n in c.get("notes") or []],
-            "streamlines": streamlines, "failures": failures, "mapped": _mapped(c.get("mapped"))}
+            "streamlines": streamlines, "failures": failures, "mapped": _mapped(c.get("mapped")),
+            "chosen": str(c.get("chosen", "")), "tries": _tries(c.get("tries"))}
 
 
 BLOCK_COUNTS = ("count", "valid", "conforming_pairs", "pairs", "flat_corners", "flat_edges")
@@ -234,9 +247,28 @@ def mapped_lines(mapped):
     return lines
 
 
+def tries_lines(correction):
+    """Method auto: one line per try, side by side with the input, then what was kept."""
+    if not correction or not correction.get("tries"):
+        return []
+    def counts(s):
+        return "%d 3-5 curves, %d invalid nodes%s" % (s["curves_3_5"], s["invalid_nodes"],
+                                                      ", hex-meshable" if s["meshable"] else "")
+    lines = ["input: %s" % counts(correction["before"])] if "invalid_nodes" in correction["before"] else []
+    for t in correction["tries"]:
+        if not t["ran"]:
+            lines.append("%s: not tried (%s)" % (t["method"], t["reason"]))
+            continue
+        lines.append("%s: %s, %.1f s%s" % (t["method"], counts(t["after"]), t["seconds"],
+                                           "" if t["kept"] else " (not kept: %s)" % (t["reason"] or "no change")))
+    lines.append("kept: %s" % (correction["chosen"] or "the input (nothing helped)"))
+    return lines
+
+
 def extrusion_lines(correction):
     """The extrusions' streamline count, then one line per failure; [] for other methods."""
-    if not correction or not correction.get("method", "").startswith("extrude"):
+    if not correction or not (correction.get("method", "").startswith("extrude") or
+                              correction.get("chosen", "").startswith("extrude")):
         return []
     lines = correction.get("streamlines", [])
     used = sum(1 for s in lines if s["used"])

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <sstream>
 
 #include "framefix/pipeline/solve_stages.h"
 
@@ -18,6 +19,13 @@ constexpr const char* kAutoOrder[] = {"snap", "extrude-nodes", "extrude-curves",
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string seconds_text(double s) {
+    std::ostringstream o;
+    o.precision(3);
+    o << s << " s";
+    return o.str();
+}
 
 int defects(const SingularitySummary& s) { return s.curves_3_5 + s.invalid_nodes; }
 
@@ -93,9 +101,13 @@ Correction correct_auto(MeshStage& mesh, FieldStage& field, SingularityGraph& gr
     }
     std::optional<State> best;
     CorrectionTry best_try = skipped("input", c.before, "");
-    double longest = 0;
+    // A try costs at least one field solve: the input's is the first estimate.
+    double longest = field.frames.seconds_init + field.frames.seconds_smooth;
     const auto over_budget = [&] { return since(t0) + longest > c.budget_s; };
-    const auto budget_note = [&] { return "budget: " + std::to_string(int(since(t0))) + " of " + std::to_string(int(c.budget_s)) + " s spent"; };
+    const auto budget_note = [&] {
+        return "budget: " + seconds_text(since(t0)) + " of " + seconds_text(c.budget_s) + " spent, a try takes about " +
+               seconds_text(longest);
+    };
     for (const char* name : kAutoOrder) {
         report(options.progress, "correct", double(c.tries.size()) / std::size(kAutoOrder));
         if (std::string(name) == "fillet" && !model) {
@@ -128,8 +140,11 @@ Correction correct_auto(MeshStage& mesh, FieldStage& field, SingularityGraph& gr
     }
     report(options.progress, "correct", 1.0);
     if (!best) {
-        c.notes.push_back("nothing helped: no method lowered the 3-5 curves plus invalid nodes (" +
-                          std::to_string(defects(c.before)) + "); the input's graph is kept");
+        const bool ran = std::any_of(c.tries.begin(), c.tries.end(), [](const CorrectionTry& t) { return t.ran; });
+        c.notes.push_back(ran ? "nothing helped: no method lowered the 3-5 curves plus invalid nodes (" +
+                                    std::to_string(defects(c.before)) + "); the input's graph is kept"
+                              : "no method fits the budget of " + seconds_text(c.budget_s) +
+                                    ": the input's graph is kept; raise --budget-s");
         c.seconds = since(t0);
         return c;
     }

@@ -21,6 +21,8 @@ KUHN = [[0, 1, 3, 7], [0, 3, 2, 7], [0, 2, 6, 7], [0, 6, 4, 7], [0, 4, 5, 7], [0
 INFO = {
     "version": 1, "default_target_tets": 50000, "mean_tet_volume_h3": 0.085,
     "correction_methods": [
+        {"name": "auto", "available": True,
+         "description": "try the methods and keep the best"},
         {"name": "snap", "available": True,
          "description": "snap 3-5 curves onto the boundary (the paper's recommendation)"},
         {"name": "fillet", "available": False,
@@ -29,7 +31,7 @@ INFO = {
          "description": "extrude feature curves to move the 3-5 curves away"},
         {"name": "extrude-nodes", "available": False,
          "description": "extrude around invalid singular nodes"}],
-    "block_methods": ["snap", "none"]}
+    "block_methods": ["auto", "snap", "none"]}
 
 
 def refusal(command, method):
@@ -89,7 +91,7 @@ def main(argv):
     delay = float(os.environ.get("FAKE_BACKEND_DELAY", "0.02"))
     stages = ["load", "mesh", "field", "singularities"]
     method = argv[argv.index("--method") + 1] if "--method" in argv else (
-        "snap" if argv[0] != "analyze" else "")
+        "auto" if argv[0] != "analyze" else "")
     refused = refusal(argv[0], method) if argv[0] != "analyze" else None
     if refused:
         print(refused, file=sys.stderr)
@@ -126,7 +128,7 @@ def main(argv):
     os.makedirs(out, exist_ok=True)
     if argv[0] == "correct" or (argv[0] == "blocks" and method != "none"):
         # the 3-5 curve is gone after the correction
-        report["correction"] = {"method": method,
+        report["correction"] = {"method": method, "chosen": "snap" if method == "auto" else "",
                                 "before": dict(summary), "changed_curves": 1,
                                 "snapped_paths": [{"source_curve": 2, "points": [
                                     [0.5, 0.0, 0.1], [0.5, 0.0, 0.9]]}]}

@@ -1,12 +1,12 @@
-"""FrameFix_Blocks: the Analyze panel running `framefix blocks`: analyse, correct (boundary
-snapping by default, or none), cut the part into blocks. The document gets the blocks (the
-tets coloured by block) with the corrected curves and snapped paths, beside the part."""
+"""FrameFix_Blocks: the Analyze panel running `framefix blocks`: analyse, correct (method
+auto by default, or none), cut the part into blocks. The document gets the blocks (the
+tets coloured by block) with the corrected curves and what the correction added, beside the part."""
 from .. import paths
 from .analyze import AnalyzeCommand
 
 
 class BlocksCommand(AnalyzeCommand):
-    METHOD = "snap"
+    METHOD = "auto"
     BLOCKS = True
 
     def GetResources(self):

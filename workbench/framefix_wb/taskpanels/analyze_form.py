@@ -6,7 +6,7 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
-from ..report import blocks_text, curve_breakdown, extrusion_lines, fillet_lines
+from ..report import blocks_text, curve_breakdown, extrusion_lines, fillet_lines, tries_lines
 
 
 class AnalyzeForm(QtWidgets.QWidget):
@@ -132,7 +132,8 @@ class AnalyzeForm(QtWidgets.QWidget):
                 verdict, before, s["curves_3_5"], s["curves"], curve_breakdown(s), s["nodes"],
                 s["invalid_nodes"], style.legend_html(style.CURVE_COLORS, kinds),
                 style.legend_html(dict(style.NODE_COLORS, **_correction_legend(correction)))))
-        for title, lines in (("Fillets", fillet_lines(correction)),
+        for title, lines in (("Tries (auto)", tries_lines(correction)),
+                             ("Fillets", fillet_lines(correction)),
                              ("Extrusion", extrusion_lines(correction))):
             if lines:
                 self.summary.setText(self.summary.text() + "<br><b>%s:</b><br>" % title +

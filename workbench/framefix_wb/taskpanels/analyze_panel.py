@@ -49,8 +49,8 @@ class AnalyzePanel:
             method = analysis_obj.Method
         if analysis_obj is not None:
             blocks = bool(getattr(analysis_obj, "Blocks", False))
-        self.blocks = blocks  # the Blocks panel: `framefix blocks`, method snap or none
-        method = method or ("snap" if blocks else None)
+        self.blocks = blocks  # the Blocks panel: `framefix blocks`, method auto by default
+        method = method or ("auto" if blocks else None)
         self.info, info_error = self._backend_info()
         self.form = f = AnalyzeForm(self._methods(method), method, blocks)
         if self.info is not None:
