@@ -71,53 +71,8 @@ def test_correct_refuses_method_none(tmp_path):
     assert "framefix: error [correct]: method 'none'" in err
 
 
-# Method auto, the default: the methods in turn, the best kept, never worse than the input.
-NEEDS_CORRECTION = ["notch.step", "notch_wide.step", "notch_shallow.step", "box_arc.step", "box_arc_curved.step",
-                    "half_sphere_box.step", "half_sphere_box_small.step", "half_sphere_box_large.step",
-                    "groove.step", "groove_wide.step", "groove_narrow.step", "two_cylinders.step"]
-
-
 def defects(s):
     return s["curves_3_5"] + s["invalid_nodes"]
-
-
-@pytest.mark.parametrize("name", NEEDS_CORRECTION + ["cylinder.step"])
-def test_auto_is_never_worse(analyze, name):
-    r = analyze(name, command="correct")
-    c = r["correction"]
-    assert c["method"] == "auto" and r["singularities"]["summary"] == c["after"]
-    assert defects(c["after"]) <= defects(c["before"])
-    for t in c["tries"]:
-        assert t["ran"] or t["reason"], t
-        assert not t["kept"] or defects(t["after"]) <= defects(c["before"]), t
-    if c["chosen"]:
-        kept = [t for t in c["tries"] if t["method"] == c["chosen"]]
-        assert kept and kept[-1]["kept"] and kept[-1]["after"] == c["after"]
-
-
-@pytest.mark.parametrize("name", ["notch.step", "box_arc.step", "half_sphere_box.step"])
-def test_auto_makes_the_papers_parts_hex_meshable(analyze, name):
-    c = analyze(name, command="correct")["correction"]
-    assert c["before"]["curves_3_5"] >= 1
-    assert c["after"]["meshable"] and c["chosen"] in ("snap", "extrude-nodes", "extrude-curves", "fillet")
-    assert c["tries"][-1]["method"] == c["chosen"]  # the first hex-meshable try ends the search
-
-
-def test_auto_leaves_a_part_without_three_five_curves_alone(analyze):
-    c = analyze("cylinder.step", command="correct")["correction"]
-    assert c["chosen"] == "" and c["tries"] == [] and c["before"] == c["after"]
-    assert c["notes"] == ["already hex-meshable: nothing to correct"]
-
-
-def test_auto_respects_its_budget(analyze):
-    """A budget below one field solve runs no try: the input's graph is kept, and says why."""
-    r = analyze("notch.step", "--budget-s", "0.01", command="correct")
-    c = r["correction"]
-    assert c["budget_s"] == 0.01 and c["chosen"] == "" and c["after"] == c["before"]
-    assert [t["method"] for t in c["tries"]] == ["snap", "extrude-nodes", "extrude-curves", "fillet"]
-    assert all(not t["ran"] and t["reason"].startswith("budget:") for t in c["tries"])
-    assert "raise --budget-s" in c["notes"][-1]
-    assert r["timings_s"]["correct"] < 1  # no re-solve ran
 
 
 def test_snapping_reports_its_rounds_and_keeps_only_improving_ones(analyze):
