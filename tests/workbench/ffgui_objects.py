@@ -89,11 +89,11 @@ def scenario(h):
     box = AnalyzePanel.active.form.method
     items = [(box.itemData(i), box.model().item(i).isEnabled(),
               box.itemData(i, QtCore.Qt.ToolTipRole)) for i in range(box.count())]
-    h.check([(n, e) for n, e, _ in items] == [("snap", True), ("fillet", False),
+    h.check([(n, e) for n, e, _ in items] == [("auto", True), ("snap", True), ("fillet", False),
                                               ("extrude-curves", False), ("extrude-nodes", False)],
             "Correct lists the backend's methods, unavailable ones disabled: %s" % items)
     h.check(all(tip for _, _, tip in items), "each method shows its description")
-    h.check(box.currentData() == "snap", "snap chosen")
+    h.check(box.currentData() == "auto", "auto chosen")
     FreeCADGui.Control.closeDialog()
     yield 0.3
     # A backend without `info` (an older one): the panel says so, and still opens.
