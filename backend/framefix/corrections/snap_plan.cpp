@@ -86,9 +86,19 @@ SnapPlan plan_snapping(const SingularityGraph& graph, const CurveEnds& ends, con
         ++p.plan.three_five_curves;
         p.add(i, false);
     }
+    // An invalid interior node goes to the boundary too, where a node on the boundary is valid:
+    // the fixed point then snaps its curves (docs/algorithms.md#snap-plan-and-collapse-rule).
+    if (options.snap_invalid_nodes)
+        for (int n = 0; n < int(graph.nodes.size()); ++n) {
+            const SingularNode& node = graph.nodes[n];
+            if (node.valid || node.boundary || ends.node_kind[n] != EndKind::Junction || p.plan.node_target[p.rep(n)] >= 0)
+                continue;
+            p.plan.node_target[p.rep(n)] = p.target_of(n);
+            ++p.plan.invalid_nodes;
+        }
     // Each pass snaps every curve touching a snapped node; a node is snapped at most once, so this
     // ends after at most #curves passes.
-    for (bool changed = p.plan.three_five_curves > 0; changed;) {
+    for (bool changed = p.plan.three_five_curves + p.plan.invalid_nodes > 0; changed;) {
         changed = false;
         for (int i = 0; i < n_curves; ++i) {
             if (p.in_plan[i] || ends.excluded[i] || !p.has_snapped_end(graph.curves[i])) continue;

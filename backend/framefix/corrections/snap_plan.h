@@ -34,6 +34,7 @@ struct SnapPlan {
     std::vector<std::array<int, 2>> targets;  // parallel to curves: target vertex of ends[0], ends[1]
     std::vector<int> node_target;             // #nodes: target vertex (via node_rep), -1 if not snapped
     int three_five_curves = 0;
+    int invalid_nodes = 0;                    // invalid interior nodes sent to the boundary
     int collapsed_ends = 0;
 };
 

@@ -154,6 +154,7 @@ SnapResult snap_three_five_curves(const TetMesh& mesh, const TetTopology& topo, 
     const CurveEnds ends = classify_curve_ends(graph, options.dead_end_radius_h * boundary.h_mean);
     const SnapPlan plan = plan_snapping(graph, ends, boundary, mesh.points, options);
     r.three_five_curves = plan.three_five_curves;
+    r.invalid_nodes_snapped = plan.invalid_nodes;
     r.snapped_curve_ids = plan.curves;
     r.snapped_curves = int(plan.curves.size());
     r.collapsed_ends = plan.collapsed_ends;

@@ -38,6 +38,10 @@ struct SnapOptions {
     // Half-width (in path vertices) of the chord used for path tangents: t_k = x_{k+w} - x_{k-w}.
     // Dijkstra paths zig-zag by up to 45 deg; w = 2 smooths that out.
     int tangent_half_width = 2;
+    // Invalid interior nodes are snapped too: the node to the nearest boundary vertex, its curves
+    // along with it (the fixed point). Off by default: it helps some parts and not others, so the
+    // pipeline's snap rounds try both (docs/algorithms.md#snap-rounds).
+    bool snap_invalid_nodes = false;
     // Re-interpolate the Dirichlet frames of feature curves that received a snapped end point
     // between their anchors (paper). Off by default: same singularities, more local change.
     bool interpolate_split_curves = false;
@@ -70,6 +74,7 @@ struct SnapResult {
     std::vector<int> node_target;   // #nodes of the graph: snap target vertex of each node, -1 if none
     std::vector<SnapRole> vertex_role;   // #V
     int three_five_curves = 0;      // 3-5 curves found in the graph
+    int invalid_nodes_snapped = 0;  // invalid interior nodes sent to the boundary (snap_invalid_nodes)
     int freed_vertices = 0;         // tangency vertices made free (Freed + SharedEnd)
     int collapsed_ends = 0;         // curve ends mapped by the collapse rule
     double hb = 0;                  // mean boundary edge length, model units

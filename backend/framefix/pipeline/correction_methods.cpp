@@ -15,8 +15,11 @@ namespace {
 // Boundary snapping: the ends of each 3-5 curve are pulled onto the boundary and the frames
 // along the boundary path between them are set so that the curve lies on the boundary.
 bool apply_snap(CorrectionContext& c) {
+    // A graph whose only defects are invalid nodes has no 3-5 curve to start from: snap the nodes.
+    SnapOptions so = c.options.snap;
+    if (c.graph.summary.curves_3_5 == 0 && c.graph.summary.invalid_nodes > 0) so.snap_invalid_nodes = true;
     c.record.snap = snap_three_five_curves(c.mesh.tets, c.mesh.topology, c.mesh.features, c.field.constraints,
-                                           c.field.frames, c.graph, c.options.snap);
+                                           c.field.frames, c.graph, so);
     if (c.record.snap.snapped_curve_ids.empty()) return false;
     c.field.constraints = c.record.snap.constraints;
     return true;

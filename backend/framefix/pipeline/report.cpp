@@ -141,6 +141,7 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"after", summary_json(after)},
             {"changed_curves", c.snap.snapped_curve_ids.size()},
             {"three_five_curves_snapped", c.snap.three_five_curves},
+            {"invalid_nodes_snapped", c.snap.invalid_nodes_snapped},
             {"freed_vertices", c.snap.freed_vertices},
             {"rotated_fraction_10deg", c.rotated_fraction},
             {"seconds", c.seconds},

@@ -52,6 +52,36 @@ TEST(SnapPlan, SnappingOneChainForcesTheOtherAtTheirSharedNode) {
     EXPECT_EQ(plan.node_target[5], -1);
 }
 
+// An invalid interior node (three valence-3 curves to the boundary) and no 3-5 curve.
+SingularityGraph invalid_junction() {
+    SingularityGraph g;
+    g.nodes.push_back(node_at(0, {0.5, 0.5, 0.3}, false));
+    g.nodes[0].valid = false;
+    g.nodes.push_back(node_at(1, {0.5, 0.5, 1.0}, true));
+    g.nodes.push_back(node_at(2, {0.0, 0.5, 0.3}, true));
+    g.nodes.push_back(node_at(3, {1.0, 0.5, 0.3}, true));
+    for (int k = 1; k <= 3; ++k) g.curves.push_back(curve_between(k - 1, 0, k, CurveKind::Valence3));
+    return g;
+}
+
+TEST(SnapPlan, InvalidInteriorNodesAreSnappedOnlyWhenAsked) {
+    Fixture f;
+    const SingularityGraph g = invalid_junction();
+    const CurveEnds ends = classify_curve_ends(g, 3 * f.boundary.h_mean);
+    ASSERT_EQ(ends.node_kind[0], EndKind::Junction);
+    const SnapPlan off = plan_snapping(g, ends, f.boundary, f.cube.mesh.points, SnapOptions{});
+    EXPECT_TRUE(off.curves.empty());
+    EXPECT_EQ(off.invalid_nodes, 0);
+    SnapOptions on;
+    on.snap_invalid_nodes = true;
+    const SnapPlan plan = plan_snapping(g, ends, f.boundary, f.cube.mesh.points, on);
+    EXPECT_EQ(plan.invalid_nodes, 1);
+    EXPECT_EQ(plan.three_five_curves, 0);
+    EXPECT_EQ(plan.curves, (std::vector<int>{0, 1, 2}));  // the node's curves, by the fixed point
+    EXPECT_EQ(plan.forced, (std::vector<char>{1, 1, 1}));
+    EXPECT_EQ(plan.node_target[0], f.cube.vertex(4, 4, 0));  // the nearest boundary vertex: z = 0 below it
+}
+
 TEST(SnapPlan, CollapseRuleMapsANearbyBoundaryEndOntoTheSnappedNode) {
     Fixture f;
     const SingularityGraph g = two_chains_sharing_a_node();
