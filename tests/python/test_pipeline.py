@@ -55,6 +55,16 @@ def test_extrusion_from_python_lists_its_streamlines_and_failures():
     assert r.mesh.num_vertices == r.field.axes.shape[0]  # the new mesh carries the new field
 
 
+def test_auto_is_the_default_and_lists_its_tries():
+    r = framefix.correct(NOTCH)
+    c = r.correction
+    assert c.method == "auto" and c.chosen == "snap" and c.changed
+    assert [t["method"] for t in c.tries] == ["snap"]  # hex-meshable at the first try
+    assert c.tries[0]["ran"] and c.tries[0]["kept"] and c.tries[0]["after"]["meshable"]
+    assert r.singularities.summary["meshable"] and c.snap_rounds[-1]["meshable"]
+    assert len(c.snapped_paths) == 1  # the kept method's own record
+
+
 def test_fillet_from_python_maps_its_graph_onto_the_original_part():
     r = framefix.correct(str(SAMPLES / "half_sphere_box.step"), method="fillet")
     c = r.correction

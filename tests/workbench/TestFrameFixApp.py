@@ -159,6 +159,19 @@ class Correction(unittest.TestCase):
         curves = analysis.make_analysis(self.part, method="snap")
         self.assertEqual((curves.Before35, curves.Curves35), (1, 0))
 
+    def test_auto_keeps_snapping_on_the_notch_and_lists_its_tries(self):
+        curves = analysis.make_analysis(self.part, method="auto")
+        self.assertEqual((curves.Before35, curves.Curves35, curves.Method), (1, 0, "auto"))
+        group = [o for o in curves.InList if o.isDerivedFrom("App::DocumentObjectGroup")][0]
+        self.assertTrue(group.Label.startswith("FrameFix correction (auto: snap) of"), group.Label)
+        self.assertGreater(len(self.doc.getObject("SnappedPaths").Shape.Edges), 0)
+        from framefix_wb.objects.properties import report_of
+        from framefix_wb.report import tries_lines
+        lines = tries_lines(report_of(curves)["correction"])
+        self.assertTrue(lines[0].startswith("input: 1 3-5 curves"), lines)
+        self.assertTrue(lines[1].startswith("snap: 0 3-5 curves, 0 invalid nodes, hex-meshable"), lines)
+        self.assertEqual(lines[-1], "kept: snap")
+
     def test_fillet_adds_the_filleted_part_and_leaves_the_users_part(self):
         part = self.part
         volume, faces = part.Shape.Volume, len(part.Shape.Faces)

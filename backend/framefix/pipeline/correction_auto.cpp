@@ -27,8 +27,6 @@ std::string seconds_text(double s) {
     return o.str();
 }
 
-int defects(const SingularitySummary& s) { return s.curves_3_5 + s.invalid_nodes; }
-
 struct State {  // a try's copy of the run: what correct() changes in place
     MeshStage mesh;
     FieldStage field;

@@ -6,6 +6,9 @@
 
 namespace framefix::detail {
 
+// 3-5 curves plus invalid nodes: what "never worse" compares and what auto ranks by.
+inline int defects(const SingularitySummary& s) { return s.curves_3_5 + s.invalid_nodes; }
+
 // Solves the field under `constraints`; the solver's progress goes to `progress`.
 FieldStage solve_field(const MeshStage& mesh, Constraints constraints, const RunOptions& options,
                        const ProgressSink& progress);
@@ -18,6 +21,11 @@ SingularityGraph find_singularities(const MeshStage& mesh, const FieldStage& fie
 // B-rep refuse those).
 Correction correct(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
                    const BrepModel* model);
+
+// Method snap: more rounds on the re-solved graph while they lower its 3-5 curves plus invalid
+// nodes (snap_rounds.cpp); `c.snap` and `c.snap_rounds` gather them.
+void more_snap_rounds(Correction& c, const MeshStage& mesh, FieldStage& field, SingularityGraph& graph,
+                      const RunOptions& options);
 
 // Method auto (correction_auto.cpp): tries the other methods on copies and keeps the best.
 Correction correct_auto(MeshStage& mesh, FieldStage& field, SingularityGraph& graph, const RunOptions& options,
