@@ -45,6 +45,8 @@ FEATURES = {
     "notch_wide.step": (18, 17, 0, 1), "notch_shallow.step": (18, 17, 0, 1),
     "half_sphere_box_small.step": (13, 12, 0, 1), "half_sphere_box_large.step": (13, 12, 0, 1),
     "groove_wide.step": (24, 22, 0, 2), "groove_narrow.step": (24, 22, 0, 2),
+    # groove_wide without its 2 rims and 2 floor arcs, plus each fillet's profile arc on the 2 side faces.
+    "groove_wide_filleted.step": (28, 28, 0, 0),
 }
 
 

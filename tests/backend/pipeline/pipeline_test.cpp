@@ -61,6 +61,7 @@ TEST(Pipeline, NoCorrectionSkipsTheStageButNotTheBlocks) {
 TEST(Pipeline, CorrectionKeepsTheGraphItCorrected) {
     RunOptions o;
     o.stop_after = Stage::correction;
+    o.correction = "snap";
     const RunResult r = run(RunInput::file(sample("notch")), o);
     ASSERT_TRUE(r.correction);
     EXPECT_EQ(r.correction->method, "snap");
@@ -143,20 +144,20 @@ TEST(Pipeline, ReportHasASectionPerStageReached) {
     EXPECT_EQ(mesh.find("\"field\""), std::string::npos);
 }
 
-TEST(CorrectionRegistry, ListsThePapersFourMethodsSnapFirst) {
+TEST(CorrectionRegistry, ListsAutoThenThePapersFourMethods) {
     const auto& all = correction_methods();
-    ASSERT_EQ(all.size(), 4u);
-    EXPECT_EQ(all[0].name, "snap");
-    EXPECT_TRUE(all[0].available && all[0].apply);
+    ASSERT_EQ(all.size(), 5u);
+    EXPECT_EQ(all[0].name, "auto");  // the default
+    EXPECT_TRUE(all[0].available && !all[0].apply);  // correct() runs it through correct_auto
     for (const auto& m : all) {
         EXPECT_FALSE(m.description.empty()) << m.name;
-        EXPECT_EQ(m.available, m.apply != nullptr) << m.name;
+        EXPECT_TRUE(m.available) << m.name;
+        EXPECT_EQ(m.apply == nullptr, m.name == "auto") << m.name;
+        EXPECT_TRUE(m.never_worse) << m.name;  // issue 15: every method
     }
-    EXPECT_EQ(&find_correction_method("snap"), &all[0]);
-    EXPECT_EQ(&find_correction_method("fillet"), &all[1]);
-    EXPECT_EQ(&find_correction_method("extrude-curves"), &all[2]);
-    EXPECT_EQ(&find_correction_method("extrude-nodes"), &all[3]);
-    for (const auto& m : all) EXPECT_EQ(m.never_worse, m.name != "snap") << m.name;  // snap: issue 15
+    EXPECT_EQ(RunOptions{}.correction, "auto");
+    const char* order[] = {"auto", "snap", "fillet", "extrude-curves", "extrude-nodes"};
+    for (size_t k = 0; k < all.size(); ++k) EXPECT_EQ(&find_correction_method(order[k]), &all[k]);
     EXPECT_THROW(find_correction_method("chamfer"), Error);
 }
 
