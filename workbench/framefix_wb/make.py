@@ -135,8 +135,7 @@ def _add_filleted(doc, source, curves):
 
 def _method_label(method, report):
     """"auto: fillet+snap" for auto (what it kept), else the method."""
-    chosen = ((report or {}).get("correction") or {}).get("chosen") or ""
-    return "%s: %s" % (method, chosen) if method == "auto" and chosen else method
+    return "%s: %s" % (method, _chosen(report)) if method == "auto" and _chosen(report) else method
 
 
 def _group_label(source, method, blocks):
@@ -145,11 +144,15 @@ def _group_label(source, method, blocks):
             CORRECTION_GROUP_LABEL % (method, label) if method else GROUP_LABEL % label)
 
 
+def _chosen(report):
+    """What method auto kept ("fillet+snap"), "" when nothing or another method ran."""
+    return ((report or {}).get("correction") or {}).get("chosen") or ""
+
+
 def _methods_run(method, report):
     """The methods whose results a run holds: auto's chosen one(s) ("fillet+snap"), or `method`."""
     if method == "auto":
-        chosen = ((report or {}).get("correction") or {}).get("chosen") or ""
-        return [m for m in chosen.split("+") if m]
+        return [m for m in _chosen(report).split("+") if m]
     return [method] if method and method != "none" else []
 
 

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include "framefix/corrections/free_boundary.h"
 #include "framefix/corrections/split_curves.h"
 #include "framefix/frame_field/projection.h"
 #include "framefix/frame_field/sh.h"
@@ -16,16 +17,10 @@ namespace {
 
 constexpr double kCoverSpacings = 0.5;  // a vertex is under a run within half its edge spacing
 
-double distance_to_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d ab = b - a;
-    const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-    return (a + t * ab - p).norm();
-}
-
 double distance_to_run(const Eigen::Vector3d& p, const EdgeRun& run) {
     double d = std::numeric_limits<double>::infinity();
     for (int i = 0; i + 1 < run.points.rows(); ++i)
-        d = std::min(d, distance_to_segment(p, run.points.row(i).transpose(), run.points.row(i + 1).transpose()));
+        d = std::min(d, point_segment_distance(p, run.points.row(i).transpose(), run.points.row(i + 1).transpose()));
     return d;
 }
 
