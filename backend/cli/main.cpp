@@ -24,6 +24,7 @@ struct Args {
     int threads = 0;
     double budget_s = 0;
     bool quiet = false;
+    bool fillet_rims = false;
     std::string method = framefix::correction_methods()[0].name;
 };
 
@@ -52,6 +53,7 @@ framefix::RunOptions options_from(const Args& a, framefix::Stage stop_after) {
     o.stop_after = stop_after;
     o.correction = a.method;
     o.budget_s = a.budget_s;
+    o.fillet.rims = a.fillet_rims;
     o.mesh.size = a.size;
     o.size_factor = a.size_factor;
     o.threads = a.threads;
@@ -108,6 +110,9 @@ int main(int argc, char** argv) {
     for (int k : {2, 3})
         commands[k].app->add_option("--budget-s", a.budget_s, "method auto: seconds for its tries (default: 120 per 50k tets)")
             ->check(CLI::PositiveNumber);
+    for (int k : {2, 3})
+        commands[k].app->add_flag("--fillet-rims", a.fillet_rims,
+                                  "method fillet: also fillet the rims across the wall from each concave edge");
     auto* info = app.add_subcommand("info", "print the defaults and the correction methods as JSON");
     try {
         app.parse(argc, argv);

@@ -21,9 +21,10 @@ Stage stage_named(const std::string& name) {
 }
 
 RunOptions make_options(const std::string& stop_after, const std::string& method, double size, double size_factor,
-                        int threads, double budget_s) {
+                        int threads, double budget_s, bool fillet_rims) {
     RunOptions o;
     o.budget_s = budget_s;
+    o.fillet.rims = fillet_rims;
     o.stop_after = stage_named(stop_after);
     o.correction = method;
     o.mesh.size = size;
@@ -154,19 +155,23 @@ void bind_pipeline(py::module_& m) {
     m.def(
         "run_file",
         [](const std::string& path, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads, double budget_s) {
-            return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads, budget_s));
+           double size_factor, int threads, double budget_s, bool fillet_rims) {
+            return run(RunInput::file(path),
+                       make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims));
         },
         py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
-        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0, py::call_guard<py::gil_scoped_release>());
+        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
+        py::arg("fillet_rims") = false, py::call_guard<py::gil_scoped_release>());
     m.def(
         "run_shape",
         [](const BrepModel& shape, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads, double budget_s) {
-            return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads, budget_s));
+           double size_factor, int threads, double budget_s, bool fillet_rims) {
+            return run(RunInput::shape(shape),
+                       make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims));
         },
         py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
-        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0, py::call_guard<py::gil_scoped_release>());
+        py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
+        py::arg("fillet_rims") = false, py::call_guard<py::gil_scoped_release>());
     m.def("info_json", &info_json, "`framefix info`: defaults and correction methods, as JSON text");
 }
 

@@ -74,6 +74,15 @@ def test_fillet_from_python_maps_its_graph_onto_the_original_part():
     assert r.mesh.num_vertices == r.field.axes.shape[0]  # the run's mesh is the filleted part's
 
 
+def test_fillet_rims_from_python():
+    """The notch's arc and, with fillet_rims, the top edge across its wall: two fillets."""
+    plain = framefix.report(framefix.correct(str(SAMPLES / "notch.step"), method="fillet", size_factor=COARSE))
+    rims = framefix.report(framefix.correct(str(SAMPLES / "notch.step"), method="fillet", size_factor=COARSE,
+                                            fillet_rims=True))
+    assert len(plain["correction"]["fillets"]) == 1
+    assert len(rims["correction"]["fillets"]) == 2 and all(f["done"] for f in rims["correction"]["fillets"])
+
+
 def test_blocks_of_the_l_prism_without_correction():
     r = framefix.build_blocks(str(SAMPLES / "l_prism.step"), method="none", size=0.05)
     assert r.correction is None

@@ -39,6 +39,8 @@ FeatureSet classify_features(const BrepModel& model, const FeatureOptions& optio
 
 // Positions of the B-rep vertices: row i is Vertex<i+1> (TetMesh::corner_vertices order).
 Points vertex_points(const BrepModel& model);
+// n >= 2 points of Edge<edge>, evenly spaced in its parameter, ends included.
+Points edge_points(const BrepModel& model, int edge, int n);
 
 // Distance from p to B-rep edge `edge` (1-based, Edge<i>) / face `face` (Face<i>), model units.
 double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p);

@@ -18,6 +18,7 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
 
@@ -150,6 +151,12 @@ FeatureSet classify_features(const BrepModel& model, const FeatureOptions& optio
                 j > 0 ? distinct_faces(edge_faces(j)) : std::vector<TopoDS_Face>{};
             EdgeFeature f = classify_edge(edge, faces, options, tolerance);
             f.edge = i;
+            for (const TopoDS_Face& face : faces) f.faces.push_back(shape.faces.FindIndex(face));
+            TopoDS_Vertex first, last;
+            TopExp::Vertices(edge, first, last);
+            for (const TopoDS_Vertex& v : {first, last})
+                if (!v.IsNull() && (f.vertices.empty() || f.vertices[0] != shape.vertices.FindIndex(v)))
+                    f.vertices.push_back(shape.vertices.FindIndex(v));
             set.edges.push_back(f);
         }
         return set;

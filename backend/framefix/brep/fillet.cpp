@@ -12,6 +12,8 @@
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Precision.hxx>
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -28,6 +30,7 @@ namespace framefix {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kSameEdgeTolerance = 10;  // edge tolerances: how far one edge's middle may lie from its copy
 
 struct Step {
     TopoDS_Shape shape;
@@ -52,12 +55,22 @@ int solids_in(const TopoDS_Shape& s) {
     return n;
 }
 
-// What a fillet of these edges should change the volume by.
-double expected_change(const std::vector<TopoDS_Shape>& edges, const std::vector<FilletRequest>& req,
-                       const std::vector<double>& radius) {
-    double v = 0;
-    for (size_t i = 0; i < edges.size(); ++i) v += fillet_section_area(radius[i], req[i].theta_deg) * length_of(edges[i]);
-    return v;
+// What a fillet of these edges should add (concave edges) and remove (convex ones), both >= 0.
+std::pair<double, double> expected_change(const std::vector<TopoDS_Shape>& edges, const std::vector<FilletRequest>& req,
+                                          const std::vector<double>& radius) {
+    double added = 0, removed = 0;
+    for (size_t i = 0; i < edges.size(); ++i) {
+        const double v = fillet_section_area(radius[i], req[i].theta_deg) * length_of(edges[i]);
+        (v > 0 ? added : removed) += std::abs(v);
+    }
+    return {added, removed};
+}
+
+// Each part of the change may be off by volume_factor either way; concave and convex fillets of
+// one groove cancel, so only the interval of the net change can be checked.
+bool volume_fits(double dv, std::pair<double, double> want, double k) {
+    const auto [added, removed] = want;
+    return dv >= added / k - removed * k && dv <= added * k - removed / k;
 }
 
 // One BRepFilletAPI_MakeFillet over `edges` with `radius`, checked: valid, one solid, volume
@@ -77,22 +90,48 @@ Step fillet_once(const TopoDS_Shape& solid, const std::vector<TopoDS_Shape>& edg
     if (!BRepCheck_Analyzer(step.shape).IsValid()) return {{}, "the filleted solid is not valid (BRepCheck_Analyzer)"};
     if (solids_in(step.shape) != 1)
         return {{}, "the fillet gave " + std::to_string(solids_in(step.shape)) + " solids instead of one"};
-    const double dv = volume_of(step.shape) - volume_of(solid), want = expected_change(edges, req, radius);
-    const bool fits = dv * want > 0 && std::abs(dv) <= o.volume_factor * std::abs(want) &&
-                      std::abs(dv) * o.volume_factor >= std::abs(want);
-    if (!fits) {
+    const double dv = volume_of(step.shape) - volume_of(solid);
+    const std::pair<double, double> want = expected_change(edges, req, radius);
+    if (!volume_fits(dv, want, o.volume_factor)) {
         std::ostringstream m;
-        m << "the volume changed by " << dv << " where the fillet should change it by about " << want;
+        m << "the volume changed by " << dv << " where the fillet should change it by about "
+          << want.first - want.second;
         return {{}, m.str()};
     }
     return step;
 }
 
+struct FaceOfFillet {
+    TopoDS_Shape face;
+    double radius = 0;
+};
+
 struct Plan {
     TopoDS_Shape shape;
     std::vector<FilletOutcome> out;
     std::string how;
+    std::vector<FaceOfFillet> faces;  // the fillet surfaces made so far, in `shape`
 };
+
+// The faces a fillet made from `edges`, with their radii.
+void add_new_faces(BRepFilletAPI_MakeFillet& mk, const std::vector<TopoDS_Shape>& edges, const std::vector<double>& radius,
+                   std::vector<FaceOfFillet>& faces) {
+    for (size_t i = 0; i < edges.size(); ++i)
+        for (const TopoDS_Shape& f : mk.Generated(edges[i])) faces.push_back({f, radius[i]});
+}
+
+// Earlier fillet faces through a later fillet's history (a neighbouring fillet trims them).
+void follow_faces(BRepFilletAPI_MakeFillet& mk, std::vector<FaceOfFillet>& faces) {
+    std::vector<FaceOfFillet> next;
+    for (const FaceOfFillet& f : faces) {
+        if (!mk.Modified(f.face).IsEmpty()) {
+            for (const TopoDS_Shape& g : mk.Modified(f.face)) next.push_back({g, f.radius});
+        } else if (!mk.IsDeleted(f.face)) {
+            next.push_back(f);
+        }
+    }
+    faces = std::move(next);
+}
 
 std::vector<double> scaled(const std::vector<FilletRequest>& req, double s) {
     std::vector<double> r;
@@ -100,12 +139,38 @@ std::vector<double> scaled(const std::vector<FilletRequest>& req, double s) {
     return r;
 }
 
-// Follows the edges still to fillet through one fillet's history.
+TopoDS_Shape middle(const TopoDS_Shape& edge) {
+    const BRepAdaptor_Curve c(TopoDS::Edge(edge));
+    return BRepBuilderAPI_MakeVertex(c.Value((c.FirstParameter() + c.LastParameter()) / 2));
+}
+
+double distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
+    BRepExtrema_DistShapeShape d(a, b);
+    return d.IsDone() && d.NbSolution() > 0 ? d.Value() : 1e300;
+}
+
+// The edge of `shape` on the same curve as `edge` (each one's middle lies on the other), or a
+// null shape: a fillet's history calls some untouched edges deleted, as it rebuilds their faces.
+TopoDS_Shape same_edge(const TopoDS_Shape& shape, const TopoDS_Shape& edge) {
+    const double tol = kSameEdgeTolerance * std::max(BRep_Tool::Tolerance(TopoDS::Edge(edge)), Precision::Confusion());
+    const TopoDS_Shape mid = middle(edge);
+    for (TopExp_Explorer it(shape, TopAbs_EDGE); it.More(); it.Next())
+        if (distance(mid, it.Current()) <= tol && distance(middle(it.Current()), edge) <= tol) return it.Current();
+    return {};
+}
+
+// Follows the edges still to fillet through one fillet's history, or by their curve where the
+// history says deleted.
 void follow(BRepFilletAPI_MakeFillet& mk, size_t from, std::vector<TopoDS_Shape>& edges, std::vector<char>& lost) {
     for (size_t j = from; j < edges.size(); ++j) {
         if (lost[j]) continue;
-        if (mk.IsDeleted(edges[j])) lost[j] = 1;
-        else if (!mk.Modified(edges[j]).IsEmpty()) edges[j] = mk.Modified(edges[j]).First();
+        if (!mk.Modified(edges[j]).IsEmpty()) {
+            edges[j] = mk.Modified(edges[j]).First();
+        } else if (mk.IsDeleted(edges[j])) {
+            const TopoDS_Shape e = same_edge(mk.Shape(), edges[j]);
+            if (e.IsNull()) lost[j] = 1;
+            else edges[j] = e;
+        }
     }
 }
 
@@ -122,6 +187,7 @@ Plan try_fillets(const BrepModel::Shape& shape, const std::vector<FilletRequest>
         const Step step = fillet_once(shape.solid, edges, req, scaled(req, s), o, mk);
         if (!step.failure.empty()) continue;
         p.shape = step.shape;
+        add_new_faces(*mk, edges, scaled(req, s), p.faces);
         for (size_t i = 0; i < req.size(); ++i) p.out[i].radius = req[i].radius * s, p.out[i].done = true;
         p.how = s == 1.0 ? "all at once" : "all at once, radii scaled by " + std::to_string(o.retry_scale);
         return p;
@@ -146,6 +212,8 @@ Plan try_fillets(const BrepModel::Shape& shape, const std::vector<FilletRequest>
             }
             p.shape = step.shape;
             p.out[i] = {req[i].edge, req[i].radius * s, true, ""};
+            follow_faces(*mk, p.faces);
+            add_new_faces(*mk, {edges[i]}, {req[i].radius * s}, p.faces);
             follow(*mk, i + 1, edges, lost);
             break;
         }
@@ -164,10 +232,6 @@ void check_requests(const BrepModel& model, const std::vector<FilletRequest>& re
     }
 }
 
-double distance(const TopoDS_Shape& a, const TopoDS_Shape& b) {
-    BRepExtrema_DistShapeShape d(a, b);
-    return d.IsDone() && d.NbSolution() > 0 ? d.Value() : 1e300;
-}
 
 }  // namespace
 
@@ -176,8 +240,7 @@ double fillet_room(const BrepModel& model, int edge) {
     const BrepModel::Shape& s = *model.shape;
     return occt_call("correct", "measuring the room for a fillet on Edge" + std::to_string(edge), [&] {
         const TopoDS_Edge e = TopoDS::Edge(s.edges(edge));
-        const BRepAdaptor_Curve curve(e);
-        const TopoDS_Shape mid = BRepBuilderAPI_MakeVertex(curve.Value((curve.FirstParameter() + curve.LastParameter()) / 2));
+        const TopoDS_Shape mid = middle(e);
         TopTools_IndexedDataMapOfShapeListOfShape faces_of;
         TopExp::MapShapesAndAncestors(s.solid, TopAbs_EDGE, TopAbs_FACE, faces_of);
         const TopTools_ListOfShape& next = faces_of.FindFromKey(e);
@@ -222,6 +285,13 @@ FilletResult fillet_edges(const BrepModel& model, const std::vector<FilletReques
             w.value<char>(f.done);
             w.text(f.reason);
         }
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(p.shape, TopAbs_FACE, faces);  // the order BRepTools::Read restores
+        w.value<int>(int(p.faces.size()));
+        for (const FaceOfFillet& f : p.faces) {
+            w.value<int>(faces.FindIndex(f.face));
+            w.value(f.radius);
+        }
         std::ostringstream brep;
         BRepTools::Write(p.shape, brep);
         w.text(brep.str());
@@ -233,6 +303,11 @@ FilletResult fillet_edges(const BrepModel& model, const std::vector<FilletReques
         FilletOutcome f{q.edge, r.value<double>(), r.value<char>() != 0, ""};
         f.reason = r.text();
         result.fillets.push_back(f);
+    }
+    for (int i = 0, n = r.value<int>(); i < n; ++i) {
+        const int face = r.value<int>();
+        const double radius = r.value<double>();
+        if (face > 0) result.fillet_faces.push_back({face, radius});
     }
     std::istringstream in(r.text());
     TopoDS_Shape shape;

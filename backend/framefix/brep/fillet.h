@@ -2,6 +2,7 @@
 // Fillets on the B-rep (the paper's fillet correction, docs/algorithms.md#fillet-insertion): OCCT's
 // BRepFilletAPI_MakeFillet on a copy of the solid, in a worker process (OCCT's filleting is
 // modelling code that can crash). The input model is never modified.
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,9 @@ struct FilletOutcome {
 struct FilletOptions {
     // After a failure every radius is scaled by this and tried once more, before going edge by edge.
     double retry_scale = 0.6;
-    // The volume change must lie within [1/k, k] x the expected sum of section area x edge length
-    // (curved edges and trimmed ends make it differ; a wrong-side or runaway fillet does not fit).
+    // The volume added (concave edges) and removed (convex ones) may each be off by [1/k, k] from
+    // the sum of section area x edge length (curved edges and trimmed ends make them differ; a
+    // wrong-side or runaway fillet does not fit).
     double volume_factor = 3;
     double timeout_s = 120;   // worker budget for all the tries
 };
@@ -36,6 +38,8 @@ struct FilletResult {
     std::vector<FilletOutcome> fillets;  // one per request, in request order
     double volume_change = 0;            // filleted minus input volume, model units^3
     std::string how;                     // "all at once", "all at once, radii x 0.6", "edge by edge"
+    // The fillet surfaces: (face of `model`, 1-based; radius), for meshing them finer.
+    std::vector<std::pair<int, double>> fillet_faces;
 };
 
 // The fillets that OCCT can make; each edge that cannot be filleted is reported, never thrown.

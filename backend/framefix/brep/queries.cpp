@@ -1,4 +1,5 @@
 // Geometric queries on a model, for tests and for corrections that snap to B-rep entities.
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Tool.hxx>
@@ -35,6 +36,20 @@ Points vertex_points(const BrepModel& model) {
         points.row(i - 1) << p.X(), p.Y(), p.Z();
     }
     return points;
+}
+
+Points edge_points(const BrepModel& model, int edge, int n) {
+    FF_ASSERT(model.shape && edge >= 1 && edge <= model.num_edges && n >= 2);
+    return occt_call("brep", "sampling Edge" + std::to_string(edge), [&] {
+        const BRepAdaptor_Curve curve(TopoDS::Edge(model.shape->edges(edge)));
+        Points points(n, 3);
+        for (int i = 0; i < n; ++i) {
+            const double t = curve.FirstParameter() + (curve.LastParameter() - curve.FirstParameter()) * i / (n - 1);
+            const gp_Pnt p = curve.Value(t);
+            points.row(i) << p.X(), p.Y(), p.Z();
+        }
+        return points;
+    });
 }
 
 double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p) {

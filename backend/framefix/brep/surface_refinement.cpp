@@ -19,9 +19,16 @@ struct Refiner {
     TaggedSurface& s;
     const SurfaceEvaluator& eval;
     std::unordered_map<Key, std::vector<int>> edge_tris;  // mesh edge -> triangles holding it
-    std::priority_queue<std::pair<double, Key>> queue;     // (length, edge), longest first
+    std::priority_queue<std::pair<double, Key>> queue;     // (length / bound, edge), most over first
     std::vector<Key> to_check;                             // edges whose Delaunay property may be broken
     long flips_left = 0;                                   // guards against flip cycles on curved faces
+    double max_edge = 0;
+    const std::vector<double>& face_max_edge;
+
+    double bound(int face) const {
+        const size_t f = size_t(face);
+        return f < face_max_edge.size() && face_max_edge[f] > 0 ? std::min(max_edge, face_max_edge[f]) : max_edge;
+    }
 
     double length(int a, int b) const { return (s.points[size_t(a)] - s.points[size_t(b)]).norm(); }
 
@@ -31,7 +38,9 @@ struct Refiner {
             const int a = v[size_t(k)], b = v[size_t((k + 1) % 3)];
             const Key key = edge_key(a, b, kAnyIdStride);
             std::vector<int>& tris = edge_tris[key];
-            if (tris.empty()) queue.push({length(a, b), key});
+            // Pushed again by a second face with a smaller bound; a split edge's entries are skipped.
+            const double b_face = bound(s.triangles[size_t(tri)].face);
+            if (tris.empty() || b_face < bound(s.triangles[size_t(tris[0])].face)) queue.push({length(a, b) / b_face, key});
             tris.push_back(tri);
         }
     }
@@ -195,17 +204,18 @@ struct Refiner {
 
 }  // namespace
 
-void refine_surface(TaggedSurface& surface, const SurfaceEvaluator& eval, double max_edge, int max_points) {
-    Refiner r{surface, eval, {}, {}, {}, 0};
+void refine_surface(TaggedSurface& surface, const SurfaceEvaluator& eval, double max_edge, int max_points,
+                    const std::vector<double>& face_max_edge) {
+    Refiner r{surface, eval, {}, {}, {}, 0, max_edge, face_max_edge};
     for (int t = 0; t < int(surface.triangles.size()); ++t) r.link(t);
     r.flips_left = 100L * long(surface.triangles.size()) + 100L * long(std::max(0, max_points));
     for (const auto& entry : r.edge_tris) r.to_check.push_back(entry.first);
     r.legalize_all();
     const size_t limit = surface.points.size() + size_t(std::max(0, max_points));
     while (!r.queue.empty() && surface.points.size() < limit) {
-        const auto [len, key] = r.queue.top();
+        const auto [over, key] = r.queue.top();
         r.queue.pop();
-        if (len <= max_edge) break;
+        if (over <= 1) break;
         if (r.edge_tris.find(key) == r.edge_tris.end()) continue;  // split already
         const auto [a, b] = key_ids(key, kAnyIdStride);
         r.split(a, b);

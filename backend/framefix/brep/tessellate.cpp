@@ -296,7 +296,14 @@ SurfaceMesh tessellate(const BrepModel& model, const FeatureSet& features, const
             if (!done[size_t(f)]) throw Error("tessellate", "Face" + std::to_string(f) + " is not part of the solid's shells");
         Geometry geometry(copied, copy);
         const double budget = 4.0 * estimate_tets(model.volume, h);  // surface points are far fewer
-        refine_surface(b.surface, geometry.evaluator(), kMaxEdge * h, int(std::min(budget, 2e9)));
+        std::vector<double> face_max(size_t(shape.faces.Extent()) + 1, 0);
+        for (const auto& [face, size] : options.face_size) {
+            if (face < 1 || face > shape.faces.Extent() || !(size > 0))
+                throw Error("mesh", "size " + std::to_string(size) + " on Face" + std::to_string(face) +
+                                        ": give a face of the part and a positive size");
+            face_max[size_t(face)] = kMaxEdge * size;
+        }
+        refine_surface(b.surface, geometry.evaluator(), kMaxEdge * h, int(std::min(budget, 2e9)), face_max);
         return to_surface_mesh(b.surface, features, copied.vertices.Extent());
     });
 }

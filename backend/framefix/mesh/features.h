@@ -16,6 +16,8 @@ struct EdgeFeature {
     double length = 0;         // model units
     bool valence_varies = false;  // samples fall in more than one valence class
     std::string reason;           // for non-features: "seam", "degenerate", "tangent"
+    std::vector<int> faces;       // the B-rep faces (1-based) that share the edge
+    std::vector<int> vertices;    // its end vertices (1-based); one for a closed edge
 };
 
 struct FeatureSet {

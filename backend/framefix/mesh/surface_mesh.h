@@ -1,5 +1,7 @@
 #pragma once
 // The boundary of a solid as a triangulated PLC: what OCCT's tessellation hands to TetGen.
+#include <map>
+
 #include <Eigen/Core>
 
 #include "framefix/mesh/size_model.h"
@@ -21,6 +23,9 @@ struct MeshOptions {
     double size = 0;            // target edge length h in model units; 0 = about target_tets tets
     int target_tets = kDefaultTargetTets;  // used only when size == 0
     double max_memory_mb = 0;   // refuse sizes whose estimate exceeds this; 0 = 80% of available RAM
+    // B-rep face (1-based) -> a smaller edge length on it (the fillet correction's fillet
+    // surfaces); TetGen's quality bound grades the tets from there to `size`.
+    std::map<int, double> face_size;
 };
 
 }  // namespace framefix

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 
 #include "framefix/core/error.h"
 #include "framefix/pipeline/fillet_plan.h"
@@ -25,12 +26,17 @@ bool apply_snap(CorrectionContext& c) {
     return true;
 }
 
-// Features and tets of a new solid at the size h of the mesh it replaces.
-MeshStage remesh(const BrepModel& model, const RunOptions& options, double h) {
+// A fillet whose room forced a radius below this many edge lengths is meshed finer, to this.
+constexpr double kFilletRadiusInEdges = 3;
+
+// Features and tets of a new solid at the size h of the mesh it replaces; faces in face_size
+// (the fillet surfaces) get their smaller sizes.
+MeshStage remesh(const BrepModel& model, const RunOptions& options, double h, std::map<int, double> face_size = {}) {
     MeshStage m;
     m.features = classify_features(model, options.features);
     MeshOptions mo = options.mesh;
     mo.size = h;
+    mo.face_size = std::move(face_size);
     BrepMeshing meshing = mesh_brep(model, m.features, mo);
     m.tets = std::move(meshing.tets);
     m.attempts = std::move(meshing.attempts);
@@ -46,7 +52,7 @@ bool apply_fillet(CorrectionContext& c) {
                                "(.step, .brep, .iges) or use --method snap");
     const auto t0 = std::chrono::steady_clock::now();
     const auto since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
-    const FilletPlan plan = plan_fillets(*c.model, c.mesh.features, c.graph, c.graph.h_mean);
+    const FilletPlan plan = plan_fillets(*c.model, c.mesh.features, c.graph, c.graph.h_mean, c.options.fillet);
     c.record.notes = plan.notes;
     if (plan.requests.empty()) return false;
     FilletResult f = fillet_edges(*c.model, plan.requests);
@@ -55,7 +61,12 @@ bool apply_fillet(CorrectionContext& c) {
     c.record.fillet_seconds = since(t0);
     if (std::none_of(f.fillets.begin(), f.fillets.end(), [](const FilletOutcome& o) { return o.done; })) return false;
     c.record.filleted = std::make_shared<const BrepModel>(std::move(f.model));
-    c.mesh = remesh(*c.record.filleted, c.options, c.mesh.tets.size);
+    const double h = c.mesh.tets.size;
+    std::map<int, double> fine;
+    for (const auto& [face, radius] : f.fillet_faces)
+        if (radius < kFilletRadiusInEdges * h) fine[face] = radius / kFilletRadiusInEdges;
+    c.record.fine_fillet_faces = int(fine.size());
+    c.mesh = remesh(*c.record.filleted, c.options, h, std::move(fine));
     c.record.remesh_seconds = since(t0) - c.record.fillet_seconds;
     c.field.constraints = boundary_constraints(c.mesh.tets, c.mesh.features);
     c.record.remeshed = true;

@@ -136,6 +136,7 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"kept", c.changed && !c.worse_dropped},
             {"mapped", mapped_json(c)},
             {"fillet_seconds", c.fillet_seconds},
+            {"fine_fillet_faces", c.fine_fillet_faces},
             {"remesh_seconds", c.remesh_seconds},
             {"before", summary_json(c.before)},
             {"after", summary_json(after)},

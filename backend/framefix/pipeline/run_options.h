@@ -6,6 +6,7 @@
 #include "framefix/brep/brep_model.h"
 #include "framefix/core/progress.h"
 #include "framefix/corrections/snapping.h"
+#include "framefix/pipeline/fillet_plan.h"
 #include "framefix/pipeline/stages.h"
 
 namespace framefix {
@@ -22,6 +23,7 @@ struct RunOptions {
     FieldOptions field;
     SingularityOptions singularities;
     SnapOptions snap;
+    FilletPlanOptions fillet;
     BlockOptions blocks;
     double size_factor = 1;  // multiplies the default size when mesh.size == 0
     int threads = 0;         // OpenMP threads of this run's parallel loops, 0 = all cores

@@ -19,19 +19,20 @@ __all__ = ["Error", "Shape", "TetMesh", "FrameField", "SingularityGraph", "Analy
 
 
 def run(part, stop_after="singularities", method="auto", size=None, size_factor=1.0, threads=0,
-        budget_s=0.0):
+        budget_s=0.0, fillet_rims=False):
     """The pipeline on a file path, a :class:`Shape`, or a BREP string, up to `stop_after`
     (load, mesh, field, singularities, correct, blocks); `method` is the correction (see
     :func:`correction_methods`), or "none"; `budget_s` is method auto's time budget (0: 120 s
-    per 50k tets). Returns an :class:`Analysis` whose stages past
+    per 50k tets); `fillet_rims` makes method fillet fillet the rims across the wall from each
+    concave edge too (a groove turns smooth). Returns an :class:`Analysis` whose stages past
     `stop_after` are None; ``report(result)`` gives report.json's content as a dict.
     """
     size = float(size or 0.0)
     if isinstance(part, str) and part.lstrip().startswith("DBRep_DrawableShape"):
         part = load_brep_string(part)
     if isinstance(part, Shape):
-        return _core.run_shape(part, stop_after, method, size, size_factor, threads, budget_s)
-    return _core.run_file(str(part), stop_after, method, size, size_factor, threads, budget_s)
+        return _core.run_shape(part, stop_after, method, size, size_factor, threads, budget_s, fillet_rims)
+    return _core.run_file(str(part), stop_after, method, size, size_factor, threads, budget_s, fillet_rims)
 
 
 def mesh_part(part, size=None, size_factor=1.0, threads=0):
@@ -44,23 +45,23 @@ def analyze(part, size=None, size_factor=1.0, threads=0):
     return run(part, "singularities", size=size, size_factor=size_factor, threads=threads)
 
 
-def correct(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0):
+def correct(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False):
     """Analyse a part, correct its 3-5 curves with `method`, analyse again.
 
     The result's field and singularities are the corrected ones; ``.correction`` says what
     changed (``.before``, ``.snapped_paths``, ``.rotated_fraction``; for auto ``.chosen`` and
     ``.tries``).
     """
-    return run(part, "correct", method, size, size_factor, threads, budget_s)
+    return run(part, "correct", method, size, size_factor, threads, budget_s, fillet_rims)
 
 
-def build_blocks(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0):
+def build_blocks(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False):
     """Analyse a part, correct it (`method`, or "none"), cut it into blocks.
 
     ``.blocks`` has ``.tet_block`` (block id per tet), ``.count``, ``.valid``;
     ``report(result)["blocks"]`` the validation.
     """
-    return run(part, "blocks", method, size, size_factor, threads, budget_s)
+    return run(part, "blocks", method, size, size_factor, threads, budget_s, fillet_rims)
 
 
 def info():

@@ -25,6 +25,7 @@ def main(argv=None):
     parser.add_argument("--out", default="framefix-out")
     parser.add_argument("--method", default="auto")
     parser.add_argument("--budget-s", type=float, default=0.0)
+    parser.add_argument("--fillet-rims", action="store_true")
     try:
         args = parser.parse_args(argv)
     except SystemExit as e:
@@ -34,7 +35,7 @@ def main(argv=None):
         if args.command == "correct" and args.method == "none":
             raise framefix.Error("correct: method 'none' corrects nothing; use analyze, or --method snap")
         result = framefix.run(args.part, STAGES[args.command], args.method, args.size, args.size_factor,
-                              args.threads, args.budget_s)
+                              args.threads, args.budget_s, args.fillet_rims)
         result.write_outputs(args.out)
     except framefix.Error as e:
         print(f"framefix: error [{str(e).split(':', 1)[0]}]: {str(e).split(': ', 1)[-1]}", file=sys.stderr)

@@ -60,6 +60,54 @@ TEST(Fillet, AnEdgeThatCannotBeFilletedIsReportedAndTheOthersAreDone) {
     EXPECT_EQ(f.model.num_faces, groove.num_faces + 1);
 }
 
+// The groove's four arcs (radii 0.4 and 0.6 about x = y = 1): floor arcs (concave) at z = 0.8,
+// rims (convex) at z = 1, with the dihedral angles of their valences.
+std::vector<FilletRequest> groove_arcs(const BrepModel& groove, double r, int valence) {
+    std::vector<FilletRequest> out;
+    for (const EdgeFeature& e : classify_features(groove).edges) {
+        const Eigen::Vector3d mid = edge_points(groove, e.edge, 3).row(1).transpose();
+        const double from_axis = std::hypot(mid.x() - 1, mid.y() - 1);
+        if (e.valence == valence && from_axis > 0.35 && from_axis < 0.65 && mid.z() > 0.7 && e.length > 0.5)
+            out.push_back({e.edge, r, valence == 3 ? 270.0 : 90.0});
+    }
+    return out;
+}
+
+TEST(Fillet, AGrooveFilletedAllRoundKeepsItsVolumeAndNamesItsFilletFaces) {
+    // Floor arcs (concave) and rims (convex) of equal lengths: the added and removed volumes
+    // cancel, which the volume check must accept. Each fillet surface is reported with its radius.
+    const BrepModel groove = load_shape(test::sample("groove"));
+    std::vector<FilletRequest> all = groove_arcs(groove, 0.04, 3);
+    for (const FilletRequest& rim : groove_arcs(groove, 0.04, 1)) all.push_back(rim);
+    ASSERT_EQ(all.size(), 4u);
+    const FilletResult f = fillet_edges(groove, all);
+    EXPECT_EQ(f.how, "all at once");
+    for (const FilletOutcome& o : f.fillets) EXPECT_TRUE(o.done) << "Edge" << o.edge << ": " << o.reason;
+    EXPECT_NEAR(f.volume_change, 0, 0.05 * (1 - kPi / 4) * 0.04 * 0.04);
+    ASSERT_EQ(f.fillet_faces.size(), 4u);
+    for (const auto& [face, radius] : f.fillet_faces) {
+        EXPECT_GE(face, 1);
+        EXPECT_LE(face, f.model.num_faces);
+        EXPECT_EQ(radius, 0.04);
+    }
+}
+
+TEST(Fillet, EdgeByEdgeFollowsTheEdgesAnEarlierFilletLeftInPlace) {
+    // The inner floor arc cannot take r = 0.5, so the fillets go one by one; the outer arc and its
+    // rim come after a fillet that rebuilt their neighbours' faces, and must still be found.
+    const BrepModel groove = load_shape(test::sample("groove"));
+    std::vector<FilletRequest> req = groove_arcs(groove, 0.04, 3);
+    ASSERT_EQ(req.size(), 2u);
+    req[0].radius = 0.5;
+    for (const FilletRequest& rim : groove_arcs(groove, 0.04, 1)) req.push_back(rim);
+    ASSERT_EQ(req.size(), 4u);
+    const FilletResult f = fillet_edges(groove, req);
+    EXPECT_EQ(f.how, "edge by edge");
+    EXPECT_FALSE(f.fillets[0].done);
+    for (size_t i = 1; i < req.size(); ++i) EXPECT_TRUE(f.fillets[i].done) << "Edge" << req[i].edge << ": " << f.fillets[i].reason;
+    EXPECT_EQ(f.fillet_faces.size(), 3u);
+}
+
 TEST(Fillet, BadRequestsAreRefused) {
     const BrepModel cube = test::box(1, 1, 1);
     EXPECT_THROW(fillet_edges(cube, {{13, 0.1, 90}}), Error);

@@ -139,6 +139,40 @@ TEST(Tessellate, RefusesSizesBeyondMemoryBeforeMeshing) {
     }
 }
 
+// Longest boundary triangle edge on each B-rep face.
+std::map<int, double> longest_edge_by_face(const SurfaceMesh& s) {
+    std::map<int, double> out;
+    for (int t = 0; t < s.triangles.rows(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const double len = (s.points.row(s.triangles(t, k)) - s.points.row(s.triangles(t, (k + 1) % 3))).norm();
+            out[s.face_tags(t)] = std::max(out[s.face_tags(t)], len);
+        }
+    return out;
+}
+
+TEST(Tessellate, AFaceGivenASmallerSizeIsMeshedFinerAndTheOthersAsBefore) {
+    // A face next to the notch's concave arc at a third of the size; TetGen grades the tets from it.
+    const BrepModel model = load_shape(test::sample("notch"));
+    const FeatureSet fs = classify_features(model);
+    MeshOptions options;
+    options.size = 0.1;
+    const std::map<int, double> plain = longest_edge_by_face(tessellate(model, fs, options));
+    int wall = 0;
+    for (const EdgeFeature& e : fs.edges)
+        if (e.valence == 3) wall = e.faces.at(0);
+    ASSERT_GT(wall, 0);
+    options.face_size[wall] = options.size / 3;
+    const SurfaceMesh fine = tessellate(model, fs, options);
+    const std::map<int, double> refined = longest_edge_by_face(fine);
+    EXPECT_LE(refined.at(wall), 1.3 * options.size / 3 + 1e-9);
+    EXPECT_GT(plain.at(wall), 1.3 * options.size / 3);
+    for (const auto& [face, len] : refined) EXPECT_LE(len, 1.3 * options.size + 1e-9) << "Face" << face;
+    const TetMesh tets = tetrahedralize(fine, options);
+    EXPECT_GT(tets.tets.rows(), 0);
+    options.face_size[model.num_faces + 1] = 0.01;
+    EXPECT_THROW(tessellate(model, fs, options), Error);
+}
+
 TEST(Tessellate, DefaultSizeGivesAboutTheTarget) {
     const BrepModel model = load_shape(test::sample("notch"));
     EXPECT_NEAR(estimate_tets(model.volume, default_size(model)), kDefaultTargetTets, 1);
