@@ -19,7 +19,8 @@ struct Refiner {
     TaggedSurface& s;
     const SurfaceEvaluator& eval;
     std::unordered_map<Key, std::vector<int>> edge_tris;  // mesh edge -> triangles holding it
-    std::priority_queue<std::pair<double, Key>> queue;     // (length / bound, edge), most over first
+    // (length x max_edge / bound, edge), most over first; exactly the length where bound = max_edge
+    std::priority_queue<std::pair<double, Key>> queue;
     std::vector<Key> to_check;                             // edges whose Delaunay property may be broken
     long flips_left = 0;                                   // guards against flip cycles on curved faces
     double max_edge = 0;
@@ -40,7 +41,8 @@ struct Refiner {
             std::vector<int>& tris = edge_tris[key];
             // Pushed again by a second face with a smaller bound; a split edge's entries are skipped.
             const double b_face = bound(s.triangles[size_t(tri)].face);
-            if (tris.empty() || b_face < bound(s.triangles[size_t(tris[0])].face)) queue.push({length(a, b) / b_face, key});
+            if (tris.empty() || b_face < bound(s.triangles[size_t(tris[0])].face))
+                queue.push({length(a, b) * (max_edge / b_face), key});
             tris.push_back(tri);
         }
     }
@@ -213,9 +215,9 @@ void refine_surface(TaggedSurface& surface, const SurfaceEvaluator& eval, double
     r.legalize_all();
     const size_t limit = surface.points.size() + size_t(std::max(0, max_points));
     while (!r.queue.empty() && surface.points.size() < limit) {
-        const auto [over, key] = r.queue.top();
+        const auto [scaled_length, key] = r.queue.top();
         r.queue.pop();
-        if (over <= 1) break;
+        if (scaled_length <= max_edge) break;
         if (r.edge_tris.find(key) == r.edge_tris.end()) continue;  // split already
         const auto [a, b] = key_ids(key, kAnyIdStride);
         r.split(a, b);
