@@ -26,7 +26,7 @@ bool apply_snap(CorrectionContext& c) {
     return true;
 }
 
-// A fillet whose room forced a radius below this many edge lengths is meshed finer, to this.
+// A fillet whose room forced a radius below one edge length is meshed finer, at r / kFilletRadiusInEdges.
 constexpr double kFilletRadiusInEdges = 3;
 
 // Features and tets of a new solid at the size h of the mesh it replaces; faces in face_size
@@ -64,7 +64,7 @@ bool apply_fillet(CorrectionContext& c) {
     const double h = c.mesh.tets.size;
     std::map<int, double> fine;
     for (const auto& [face, radius] : f.fillet_faces)
-        if (radius < kFilletRadiusInEdges * h) fine[face] = radius / kFilletRadiusInEdges;
+        if (radius < h) fine[face] = radius / kFilletRadiusInEdges;
     c.record.fine_fillet_faces = int(fine.size());
     c.mesh = remesh(*c.record.filleted, c.options, h, std::move(fine));
     c.record.remesh_seconds = since(t0) - c.record.fillet_seconds;
