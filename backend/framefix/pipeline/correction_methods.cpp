@@ -26,8 +26,9 @@ bool apply_snap(CorrectionContext& c) {
     return true;
 }
 
-// A fillet whose room forced a radius below one edge length is meshed finer, at r / kFilletRadiusInEdges.
-constexpr double kFilletRadiusInEdges = 3;
+// A fillet whose room kept its radius below one edge length h is meshed at r / this: the three
+// edges per radius that r = 3 h gives where there is room.
+constexpr double kEdgesPerFilletRadius = 3;
 
 // Features and tets of a new solid at the size h of the mesh it replaces; faces in face_size
 // (the fillet surfaces) get their smaller sizes.
@@ -64,7 +65,7 @@ bool apply_fillet(CorrectionContext& c) {
     const double h = c.mesh.tets.size;
     std::map<int, double> fine;
     for (const auto& [face, radius] : f.fillet_faces)
-        if (radius < h) fine[face] = radius / kFilletRadiusInEdges;
+        if (radius < h) fine[face] = radius / kEdgesPerFilletRadius;
     c.record.fine_fillet_faces = int(fine.size());
     c.mesh = remesh(*c.record.filleted, c.options, h, std::move(fine));
     c.record.remesh_seconds = since(t0) - c.record.fillet_seconds;
