@@ -26,9 +26,12 @@ bool apply_snap(CorrectionContext& c) {
     return true;
 }
 
-// A fillet whose room kept its radius below one edge length h is meshed at r / this: the three
-// edges per radius that r = 3 h gives where there is room.
+// With rims, a fillet whose room kept its radius below one edge length h is meshed at r / this
+// (the three edges per radius that r = 3 h gives where there is room), but no finer than
+// kFinestFilletSize h. Only with rims: on concave-only fillets it cost more graphs than it
+// made valid (docs/algorithms.md#re-analysis).
 constexpr double kEdgesPerFilletRadius = 3;
+constexpr double kFinestFilletSize = 0.5;
 
 // Features and tets of a new solid at the size h of the mesh it replaces; faces in face_size
 // (the fillet surfaces) get their smaller sizes.
@@ -65,7 +68,7 @@ bool apply_fillet(CorrectionContext& c) {
     const double h = c.mesh.tets.size;
     std::map<int, double> fine;
     for (const auto& [face, radius] : f.fillet_faces)
-        if (radius < h) fine[face] = radius / kEdgesPerFilletRadius;
+        if (c.options.fillet.rims && radius < h) fine[face] = std::max(radius / kEdgesPerFilletRadius, kFinestFilletSize * h);
     c.record.fine_fillet_faces = int(fine.size());
     c.mesh = remesh(*c.record.filleted, c.options, h, std::move(fine));
     c.record.remesh_seconds = since(t0) - c.record.fillet_seconds;

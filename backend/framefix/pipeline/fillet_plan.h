@@ -14,7 +14,8 @@ struct FilletPlanOptions {
     double radius = 3;        // wanted radius, in mean edge lengths: the mesh resolves the fillet
     double room_share = 0.25; // the radius stays below this share of the edge's room (fillet_room)
     // Also fillet each chosen edge's rims: the convex edges across a strip face from it (a
-    // groove's or notch's top edges), so the whole feature turns smooth, as in the paper's Fig. 5b.
+    // groove's or notch's top edges), so the whole feature turns smooth, as in the paper's Fig. 5b;
+    // fillets narrower than h are then meshed finer (correction_methods.cpp).
     bool rims = false;
 };
 

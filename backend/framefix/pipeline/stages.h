@@ -82,7 +82,7 @@ struct Correction {
     int mapped_points = 0, mapped_nodes = 0;  // fillet: curve points and nodes moved onto the concave edges
     std::optional<FlatCornerSolve> flat_corners;  // fillet: the mapped graph offered to the original part
     double fillet_seconds = 0;      // choosing the edges and filleting (OCCT), before the remesh
-    int fine_fillet_faces = 0;      // fillet surfaces meshed finer than h (their radius is below h)
+    int fine_fillet_faces = 0;      // with rims: fillet surfaces meshed finer than h (radius below h)
     double remesh_seconds = 0;      // features and tets of the filleted solid; extrusions: TetGen with the points
     // Method snap: the summary after each round (the re-solve of one snapping; a round that does
     // not lower the 3-5 curves plus invalid nodes is not kept and ends the rounds).
