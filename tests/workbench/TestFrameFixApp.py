@@ -9,6 +9,7 @@ import FreeCAD
 import Part
 
 from framefix_wb import analysis, make, runs, shapes
+from framefix_wb.objects.properties import report_of
 
 SAMPLES = os.environ.get("FRAMEFIX_SAMPLES") or os.path.join(
     os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "samples")
@@ -208,6 +209,28 @@ class Correction(unittest.TestCase):
         on_arc = [v for v in mapped[0].Shape.Vertexes if abs(v.Point.z - 0.5) < 1e-6 and
                   abs(((v.Point.x - 1 - dx) ** 2 + (v.Point.y - 1) ** 2) ** 0.5 - 0.5) < 1e-6]
         self.assertGreater(len(on_arc), 2)
+
+    def test_fillet_rims_from_a_macro_fillet_the_grooves_four_edges(self):
+        """The groove (two concave floor arcs, two convex rims above them): with fillet_rims
+        the filleted part has the four fillet faces, the setting is kept on the analysis and
+        in what a recompute compares, and the user's part is unchanged."""
+        self.part.Shape = Part.read(os.path.join(SAMPLES, "groove.step"))
+        self.doc.recompute()
+        faces, volume = len(self.part.Shape.Faces), self.part.Shape.Volume
+        curves = analysis.make_analysis(self.part, method="fillet", fillet_rims=True)
+        self.assertTrue(curves.FilletRims)
+        self.assertTrue(curves.InputDigest.endswith(" rims"), curves.InputDigest)
+        filleted = self.doc.getObject("FilletedPart")
+        self.assertEqual(len(filleted.Shape.Faces), faces + 4)
+        done = [f for f in report_of(curves)["correction"]["fillets"] if f["done"]]
+        self.assertEqual(len(done), 4)
+        self.assertEqual((len(self.part.Shape.Faces), self.part.Shape.Volume), (faces, volume))
+        # Switching the rims off reruns on recompute: the floor arcs only.
+        curves.FilletRims = False
+        curves.touch()
+        self.doc.recompute()
+        self.assertFalse(curves.InputDigest.endswith(" rims"))
+        self.assertEqual(len(filleted.Shape.Faces), faces + 2)
 
 
     def test_extrusions_show_their_streamlines_inside_the_part(self):

@@ -47,6 +47,14 @@ def scenario(h):
     FreeCADGui.runCommand("FrameFix_Correct")
     yield 0.5
     panel = AnalyzePanel.active
+    f, chosen = panel.form, panel.form.method.currentIndex()
+    f.rims.setChecked(True)
+    for method, applies in (("snap", False), ("fillet", True), ("auto", True)):
+        f.method.setCurrentIndex(f.method.findData(method))
+        h.check(f.rims.isEnabled() == applies and panel.chosen_rims() == applies,
+                "the rims switch applies to %s: %s" % (method, applies))
+    f.rims.setChecked(False)
+    f.method.setCurrentIndex(chosen)
     h.button(QtWidgets.QDialogButtonBox.Apply).click()
     yield 1.0
     yield h.until(lambda: not panel.runner.is_running(), 600, "the correction to finish")

@@ -72,10 +72,11 @@ class AnalysisJob:
     `method`, `framefix correct ... --method M` (analyze, correct, analyze again), or with
     `blocks`, `framefix blocks ... [--method M]` (and the block mesh in the report). The
     methods are the backend's to check (runs.check_method asks it first). `out_dir`: where
-    the backend writes (kept), else a folder in the job's temporary one."""
+    the backend writes (kept), else a folder in the job's temporary one. `fillet_rims`: the
+    fillet correction also fillets the convex rims across a strip from each concave edge."""
 
     def __init__(self, shape, size=None, backend=None, timeout=None, method=None, blocks=False,
-                 out_dir=None):
+                 out_dir=None, fillet_rims=False):
         self.backend = backend or find_backend()
         self.timeout = timeout_from_env() if timeout is None else float(timeout)
         self.workdir = tempfile.mkdtemp(prefix="framefix_")
@@ -89,6 +90,8 @@ class AnalysisJob:
             self.argv += ["--size", repr(float(size))]
         if method:
             self.argv += ["--method", method]
+        if fillet_rims:
+            self.argv += ["--fillet-rims"]
         self.env = self.backend.environment()
         self.lines = collections.deque(maxlen=KEPT_LINES)  # the last output lines
         self.error_line = None  # (stage, message) of the backend's last `framefix: error` line

@@ -89,7 +89,7 @@ def _kind(method, blocks):
 
 
 def make_analysis(source, size=None, report=None, digest=None, backend=None, method="",
-                  blocks=False):
+                  blocks=False, fillet_rims=False):
     """Add the analysis group of `source` (a part, Body or Link); returns SingularCurves.
 
     `size` None (stored as Size 0) lets the backend pick it. Without `report` the backend
@@ -97,15 +97,17 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
     size, method and blocks that report was computed from. With `method` ("auto", "snap", ...), a
     correction: the curves are those after correcting, Before35 counts the 3-5 curves before.
     With `blocks` (method "auto", the default, another method, or "none"), the part cut into blocks too: a
-    Blocks object (the tets coloured by block) beside the curves.
+    Blocks object (the tets coloured by block) beside the curves. `fillet_rims`: method fillet
+    (or auto's fillet try) also fillets the convex rims across a strip from each concave edge.
     """
     solid = shapes.solid_of(source)
     size = float(size or 0.0)
     if blocks:
         method = method or "auto"
     if report is None:
-        report = runs.run(solid, size or None, method or None, blocks, backend)
-        digest = runs.input_digest(solid, size, method, blocks)
+        report = runs.run(solid, size or None, method or None, blocks, backend,
+                          fillet_rims=fillet_rims)
+        digest = runs.input_digest(solid, size, method, blocks, fillet_rims)
     elif blocks:
         runs.remember_block_mesh(digest, report)
     doc = source.Document
@@ -115,6 +117,7 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
         group.Label = _group_label(source, _method_label(method, report), blocks)
         curves, parts = _add_parts(doc, method, blocks, report)
         curves.Source, curves.Size, curves.Blocks, curves.Method = source, size, blocks, method
+        curves.FilletRims = bool(fillet_rims)
         runs.store(curves, report, digest)
         if curves.FilletedBrep:
             parts.append(_add_filleted(doc, source, curves))
@@ -188,13 +191,14 @@ def _add_parts(doc, method, blocks, report):
     return curves, parts
 
 
-def update_analysis(curves, size, report, digest, method=""):
+def update_analysis(curves, size, report, digest, method="", fillet_rims=False):
     """Store a new run (from the task panel) on an existing analysis and recompute it."""
     doc = curves.Document
     if curves.Blocks:
         runs.remember_block_mesh(digest, report)
     with _Transaction(doc, _kind(method, curves.Blocks)):
         curves.Size, curves.Method = float(size or 0.0), method
+        curves.FilletRims = bool(fillet_rims)
         runs.store(curves, report, digest)
         if curves.FilletedBrep and not _with_proxy(curves.InList, FilletedPart):
             _add_to_group(curves, _add_filleted(doc, curves.Source, curves))
@@ -214,10 +218,12 @@ def _add_to_group(curves, obj):
         group.addObject(obj)
 
 
-def make_blocks(source, size=None, method="auto", report=None, digest=None, backend=None):
+def make_blocks(source, size=None, method="auto", report=None, digest=None, backend=None,
+                fillet_rims=False):
     """make_analysis with blocks: correct (`method`, auto by default, or none), cut into blocks; returns
     the Blocks object (its Analysis is the curves object owning the run)."""
-    curves = make_analysis(source, size, report, digest, backend, method, blocks=True)
+    curves = make_analysis(source, size, report, digest, backend, method, blocks=True,
+                           fillet_rims=fillet_rims)
     return blocks_of(curves)
 
 

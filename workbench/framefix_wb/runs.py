@@ -26,11 +26,12 @@ _KEPT_BLOCK_MESHES = 3
 _INFO = {}  # backend key -> checked info, or the BackendError it gave
 
 
-def input_digest(solid, size, method="", blocks=False):
+def input_digest(solid, size, method="", blocks=False, fillet_rims=False):
     """What a run depends on: the solid's geometry, the size (None: the backend's default),
-    the correction method ("" for an analysis) and whether it cuts blocks."""
+    the correction method ("" for an analysis), whether it cuts blocks and fillets rims."""
     digest = "%s size=%r" % (shapes.shape_digest(solid), float(size or 0.0))
-    return digest + (" method=%s" % method if method else "") + (" blocks" if blocks else "")
+    return (digest + (" method=%s" % method if method else "") + (" blocks" if blocks else "") +
+            (" rims" if fillet_rims else ""))
 
 
 def remember_block_mesh(digest, report):
@@ -103,18 +104,18 @@ def check_method(method, blocks=False, backend=None):
 
 
 def run(solid, size, method=None, blocks=False, backend=None, timeout=None, out_dir=None,
-        on_progress=None):
+        on_progress=None, fillet_rims=False):
     """The checked report of the backend on `solid`: an analysis, with `method` a correction,
     with `blocks` a block decomposition (its tet mesh kept for the Blocks object). `size`
     None lets the backend choose. Raises FrameFixError (BackendError when the run failed)."""
     check_method(method, blocks, backend)
-    job = AnalysisJob(solid, size, backend, timeout, method, blocks, out_dir)
+    job = AnalysisJob(solid, size, backend, timeout, method, blocks, out_dir, fillet_rims)
     try:
         report = run_sync(job, on_progress=on_progress, on_idle=gui_idle)
     finally:
         job.cleanup()
     if blocks:
-        remember_block_mesh(input_digest(solid, size, method or "", True), report)
+        remember_block_mesh(input_digest(solid, size, method or "", True, fillet_rims), report)
     return report
 
 
@@ -126,13 +127,15 @@ def store(curves, report, digest):
 
 
 def refresh(curves):
-    """Bring a SingularCurves object's Report up to date: rerun if its solid, Size, Method or
+    """Bring a SingularCurves object's Report up to date: rerun if its solid, Size, Method, FilletRims or
     Blocks changed since (InputDigest): results applied from the panel are not run twice."""
     solid = shapes.solid_of(curves.Source)
     size = curves.Size.Value or None  # 0: the backend's default
-    digest = input_digest(solid, size, curves.Method, curves.Blocks)
+    rims = curves.FilletRims
+    digest = input_digest(solid, size, curves.Method, curves.Blocks, rims)
     if digest != curves.InputDigest or not curves.Report:
-        report = run(solid, size, method=curves.Method or None, blocks=curves.Blocks)
+        report = run(solid, size, method=curves.Method or None, blocks=curves.Blocks,
+                     fillet_rims=rims)
         store(curves, report, digest)
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (curves.Source.Label,
                                                             run_text(report)))

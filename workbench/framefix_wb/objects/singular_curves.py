@@ -29,11 +29,14 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyBool", "Blocks", "FrameFix",
             "The run also cuts the part into blocks (framefix blocks); Method: the correction "
             "before the cut", READ_ONLY)
+        add(obj, "App::PropertyBool", "FilletRims", "FrameFix",
+            "Method fillet (or auto's fillet try): also fillet the convex rim across a strip "
+            "from each concave edge filleted, as the paper does for a groove")
         add(obj, "App::PropertyInteger", "Before35", "Summary",
             "3-5 curves before the correction", READ_ONLY)
         self.show_method(obj)
         add(obj, "App::PropertyString", "Report", "FrameFix", "report.json of the last run", HIDDEN)
-        add(obj, "App::PropertyString", "InputDigest", "FrameFix", "solid, size, method of that run",
+        add(obj, "App::PropertyString", "InputDigest", "FrameFix", "solid, size, method, rims of that run",
             HIDDEN)
         add(obj, "App::PropertyString", "FilletedBrep", "FrameFix",
             "method fillet: the filleted solid of that run (BREP text), read by FilletedPart", HIDDEN)
@@ -55,7 +58,7 @@ class SingularCurves(ProxyBase):
 
     def show_method(self, obj):
         """Method and Before35 only on corrections: an analysis has no use for them."""
-        for name in ("Method", "Before35"):
+        for name in ("Method", "Before35", "FilletRims"):
             obj.setEditorMode(name, (READ_ONLY if name == "Before35" else 0) if obj.Method
                               else HIDDEN)
         obj.setEditorMode("Blocks", READ_ONLY if obj.Blocks else HIDDEN)

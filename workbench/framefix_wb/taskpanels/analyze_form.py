@@ -36,11 +36,15 @@ class AnalyzeForm(QtWidgets.QWidget):
         grid.addWidget(self.auto, 0, 2)
         self.estimate = QtWidgets.QLabel()
         grid.addWidget(self.estimate, 1, 1, 1, 2)
-        self.method = None
+        self.method = self.rims = None
         if methods:
             grid.addWidget(QtWidgets.QLabel("Method"), 2, 0)
             self.method = self._method_box(methods, method)
             grid.addWidget(self.method, 2, 1, 1, 2)
+            self.rims = QtWidgets.QCheckBox("Fillet the rims too")
+            self.rims.setToolTip("Method fillet (or auto's fillet try): also fillet the convex "
+                                 "rim across a strip from each concave edge, as for a groove")
+            grid.addWidget(self.rims, 3, 1, 1, 2)
         layout.addLayout(grid)
         self.bar = QtWidgets.QProgressBar()
         self.bar.setRange(0, 1000)

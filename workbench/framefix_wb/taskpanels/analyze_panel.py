@@ -17,6 +17,8 @@ from ..report import run_text
 from .analyze_form import AnalyzeForm
 from .process_runner import ProcessRunner
 
+RIM_METHODS = ("fillet", "auto")  # the methods that fillet, so the rims switch applies
+
 
 def _alive(obj):
     """False for None and for a document object deleted since."""
@@ -41,7 +43,8 @@ class AnalyzePanel:
         self.runner.succeeded.connect(self._on_succeeded)
         self.runner.failed.connect(self._on_failed)
         self.job = self.digest = self.size_run = self.method_run = None
-        self.last = None  # (source name, size) of the run the document shows
+        self.rims_run = False
+        self.last = None  # (source name, size, method, rims) of the run the document shows
         self.close_on_success = False
         self.closed = False  # the form is gone: slots must not touch widgets
         self.started = 0.0
@@ -58,12 +61,17 @@ class AnalyzePanel:
         f.size.valueChanged.connect(self._update_estimate)
         f.auto.toggled.connect(self._reset_size)
         self.runner.lines.connect(f.queue_output)
+        if f.method is not None:
+            f.method.currentIndexChanged.connect(self._enable_rims)
+            self._enable_rims()
         self._set_source(source)
         if analysis_obj is not None:
             f.auto.setChecked(analysis_obj.Size.Value == 0)
             if analysis_obj.Size.Value > 0:
                 f.size.setValue(analysis_obj.Size.Value)
-            self.last = (analysis_obj.Source.Name, self.chosen_size(), self.chosen_method())
+            if f.rims is not None:
+                f.rims.setChecked(bool(getattr(analysis_obj, "FilletRims", False)))
+            self.last = (analysis_obj.Source.Name,) + self.chosen_run()
         if message or info_error:
             self._show_error("; ".join(m for m in (message, info_error) if m))
         self.ticker = QtCore.QTimer(self.form)  # dies with the form, however it is closed
@@ -130,6 +138,18 @@ class AnalyzePanel:
         """The correction method; "" for an analysis."""
         return self.form.method.currentData() if self.form.method is not None else ""
 
+    def chosen_rims(self):
+        """Whether the fillet correction fillets the rims too (only methods that fillet)."""
+        return bool(self.form.rims is not None and self.form.rims.isChecked()
+                    and self.chosen_method() in RIM_METHODS)
+
+    def chosen_run(self):
+        """(size, method, rims): what a run from the panel depends on besides the part."""
+        return self.chosen_size(), self.chosen_method(), self.chosen_rims()
+
+    def _enable_rims(self, *_):
+        self.form.rims.setEnabled(self.chosen_method() in RIM_METHODS)
+
     def _update_estimate(self, *_):
         self.form.show_estimate(self.volume, self.info)
 
@@ -154,11 +174,12 @@ class AnalyzePanel:
             if self.source is None:
                 self._set_source(shapes.source_from_selection(FreeCADGui.Selection.getSelection()))
             solid = shapes.solid_of(self.source)
-            self.size_run, self.method_run = self.chosen_size(), self.chosen_method()
+            self.size_run, self.method_run, self.rims_run = self.chosen_run()
             runs.check_method(self.method_run, self.blocks)
-            self.digest = runs.input_digest(solid, self.size_run, self.method_run, self.blocks)
+            self.digest = runs.input_digest(solid, self.size_run, self.method_run, self.blocks,
+                                            self.rims_run)
             self.job = AnalysisJob(solid, self.size_run, method=self.method_run or None,
-                                   blocks=self.blocks)
+                                   blocks=self.blocks, fillet_rims=self.rims_run)
         except (FrameFixError, ReferenceError, RuntimeError, OSError) as e:
             self._show_error(str(e))
             return False
@@ -180,15 +201,15 @@ class AnalyzePanel:
         try:
             if _alive(self.analysis):
                 make.update_analysis(self.analysis, self.size_run, report, self.digest,
-                                     self.method_run)
+                                     self.method_run, self.rims_run)
             else:
                 self.analysis = make.make_analysis(self.source, self.size_run, report,
                                                    self.digest, method=self.method_run,
-                                                   blocks=self.blocks)
+                                                   blocks=self.blocks, fillet_rims=self.rims_run)
         except Exception as e:  # the adapter boundary: whatever went wrong goes to the panel
             self._show_error("could not add the results: %s" % e)
             return
-        self.last = (self.source.Name, self.size_run, self.method_run)
+        self.last = (self.source.Name, self.size_run, self.method_run, self.rims_run)
         text = run_text(report)
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (self.source.Label, text))
         self._log(text)
@@ -236,8 +257,7 @@ class AnalyzePanel:
         if self.runner.is_running():
             self.close_on_success = True
             return False
-        if self.source is not None and self.last == (self.source.Name, self.chosen_size(),
-                                                     self.chosen_method()):
+        if self.source is not None and self.last == (self.source.Name,) + self.chosen_run():
             self._close()
             return True
         self.close_on_success = self.apply()
