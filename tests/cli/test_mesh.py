@@ -83,3 +83,23 @@ def test_iges_and_brep_inputs_give_the_same_part_as_step(analyze, name, kind):
     assert other["input"]["kind"] == kind
     assert other["features"]["by_valence"] == step["features"]["by_valence"]
     assert other["singularities"]["summary"]["curves_3_5"] == 1
+
+
+def test_a_coarse_size_coarsens_only_the_faces_wide_enough_for_it(tmp_path):
+    """At 2.5 x the default size the groove's 0.2-wide floor would be one edge across, and its
+    two 3-5 curves would merge: its narrow faces keep the default size, the rest coarsens."""
+    reports = {}
+    for factor in ("1", "2.5"):
+        code, _, err = run("analyze", SAMPLES / "groove.step", "--out", tmp_path / factor,
+                           "--size-factor", factor, "--quiet")
+        assert code == 0, err
+        reports[factor] = json.loads((tmp_path / factor / "report.json").read_text())
+    default, coarse = reports["1"], reports["2.5"]
+    assert "narrow_faces" not in default["mesh"]
+    assert coarse["mesh"]["narrow_faces"] >= 1
+    assert coarse["mesh"]["tets"] < default["mesh"]["tets"] / 4
+    for r in (default, coarse):
+        assert r["singularities"]["summary"]["curves_3_5"] == 2
+    code, _, err = run("mesh", SAMPLES / "cube.step", "--out", tmp_path / "cube", "--size-factor", "2.5")
+    assert code == 0, err
+    assert "narrow_faces" not in json.loads((tmp_path / "cube" / "report.json").read_text())["mesh"]

@@ -45,6 +45,9 @@ Points edge_points(const BrepModel& model, int edge, int n);
 // Distance from p to B-rep edge `edge` (1-based, Edge<i>) / face `face` (Face<i>), model units.
 double distance_to_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p);
 double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d& p);
+// Twice the face's area over its boundary length, model units: a strip's width, a disc's radius,
+// half a square's side (a face's inradius when it is a tangential polygon).
+double face_width(const BrepModel& model, int face);
 Eigen::Vector3d closest_point_on_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p);
 
 // Size h for about `target_tets` near-uniform tets in this solid.

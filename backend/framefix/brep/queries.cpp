@@ -1,5 +1,7 @@
 // Geometric queries on a model, for tests and for corrections that snap to B-rep entities.
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRep_Tool.hxx>
@@ -73,6 +75,17 @@ double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d&
         throw Error("brep", "Face" + std::to_string(face) + " does not exist; the model has " +
                                 std::to_string(model.num_faces) + " faces");
     return distance_to(model.shape->faces(face), p);
+}
+
+double face_width(const BrepModel& model, int face) {
+    FF_ASSERT(model.shape && face >= 1 && face <= model.num_faces);
+    return occt_call("brep", "measuring Face" + std::to_string(face), [&] {
+        const TopoDS_Shape& f = model.shape->faces(face);
+        GProp_GProps area, length;
+        BRepGProp::SurfaceProperties(f, area);
+        BRepGProp::LinearProperties(f, length);
+        return length.Mass() > 0 ? 2 * area.Mass() / length.Mass() : 0.0;
+    });
 }
 
 }  // namespace framefix

@@ -26,6 +26,9 @@ struct MeshOptions {
     // B-rep face (1-based) -> a smaller edge length on it (the fillet correction's fillet
     // surfaces); TetGen's quality bound grades the tets from there to `size`.
     std::map<int, double> face_size;
+    // A size coarser than the default coarsens only faces wide enough for it: narrower ones keep
+    // 2.5 edges across, or the default size (pipeline/mesh_attempts.cpp).
+    bool keep_narrow_faces = true;
 };
 
 }  // namespace framefix

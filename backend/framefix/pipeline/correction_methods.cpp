@@ -44,6 +44,7 @@ MeshStage remesh(const BrepModel& model, const RunOptions& options, double h, st
     BrepMeshing meshing = mesh_brep(model, m.features, mo);
     m.tets = std::move(meshing.tets);
     m.attempts = std::move(meshing.attempts);
+    m.narrow_faces = meshing.narrow_faces;
     m.topology = build_topology(m.tets);
     return m;
 }

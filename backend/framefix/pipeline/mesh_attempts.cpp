@@ -56,6 +56,35 @@ bool refuse_self_intersecting_solid(const BrepModel& model) {
     return true;
 }
 
+// Edges across a face's width (brep face_width) below which a coarse size would leave it
+// unresolved: at 1.5 x the default size the groove's floor (2.48 edges across at 1 x) gets 1.65
+// and its two 3-5 curves merged into one. 3 instead changed one filleted groove's graph at 1.5 x
+// (docs/algorithms.md#narrow-faces).
+constexpr double kEdgesAcrossNarrowFace = 2.5;
+
+// Sizes for the faces too narrow for options.size, never finer than the default size; returns
+// how many. A face OCCT cannot measure keeps the size.
+int keep_narrow_faces(const BrepModel& model, MeshOptions& options) {
+    if (!options.keep_narrow_faces) return 0;
+    const double h_default = default_size(model, options.target_tets);
+    if (options.size <= h_default) return 0;
+    int narrow = 0;
+    for (int f = 1; f <= model.num_faces; ++f) {
+        double width = 0;
+        try {
+            width = face_width(model, f);
+        } catch (const Error&) {
+            continue;
+        }
+        const double hf = std::max(width / kEdgesAcrossNarrowFace, h_default);
+        if (hf >= options.size) continue;
+        const auto [at, fresh] = options.face_size.emplace(f, hf);
+        if (!fresh) at->second = std::min(at->second, hf);
+        ++narrow;
+    }
+    return narrow;
+}
+
 bool plan_helps(const Plan& p, TetgenStatus failure) {
     return failure == TetgenStatus::self_intersecting ? p.for_intersections : p.for_recovery;
 }
@@ -86,9 +115,11 @@ std::string final_message(const std::vector<MeshAttempt>& attempts, bool solid_s
 
 }  // namespace
 
-BrepMeshing mesh_brep(const BrepModel& model, const FeatureSet& features, const MeshOptions& options) {
-    FF_ASSERT(options.size > 0);
+BrepMeshing mesh_brep(const BrepModel& model, const FeatureSet& features, const MeshOptions& given) {
+    FF_ASSERT(given.size > 0);
     BrepMeshing result;
+    MeshOptions options = given;
+    result.narrow_faces = keep_narrow_faces(model, options);
     TetgenStatus first = TetgenStatus::meshed;
     bool solid_sound = false;
     SurfaceCache cache;

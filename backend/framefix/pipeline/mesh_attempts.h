@@ -19,6 +19,7 @@ struct MeshAttempt {
 struct BrepMeshing {
     TetMesh tets;
     std::vector<MeshAttempt> attempts;  // in order; the last one meshed
+    int narrow_faces = 0;               // faces meshed finer than the size (MeshOptions::keep_narrow_faces)
 };
 
 // Throws framefix::Error (stage "mesh") when every attempt fails, naming the first failure.

@@ -58,6 +58,7 @@ MeshStage mesh(const RunResult& r, std::optional<TetMesh> tets, const RunOptions
         BrepMeshing meshing = mesh_brep(*r.model, m.features, mo);
         m.tets = std::move(meshing.tets);
         m.attempts = std::move(meshing.attempts);
+        m.narrow_faces = meshing.narrow_faces;
     }
     m.topology = build_topology(m.tets);
     report(o.progress, "mesh", 1.0);

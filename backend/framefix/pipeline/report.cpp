@@ -204,6 +204,7 @@ std::string report_json(const RunResult& r) {
         const TetMesh& m = r.mesh->tets;
         j["mesh"] = {{"vertices", m.num_vertices()}, {"tets", m.num_tets()}, {"size", m.size}};
         if (!r.mesh->attempts.empty()) j["mesh"]["attempts"] = attempts_json(r.mesh->attempts);
+        if (r.mesh->narrow_faces > 0) j["mesh"]["narrow_faces"] = r.mesh->narrow_faces;
         add_features(j, *r.mesh);
     }
     if (r.field) {
