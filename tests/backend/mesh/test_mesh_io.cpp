@@ -86,6 +86,18 @@ TEST(MeshIo, MshWithGapsInNodeTagsAndTaggedTriangles) {
     EXPECT_EQ(tagged, 1);
 }
 
+// Node tags 1..4 (a dense table) and 10..40 in steps of 10 (a sorted list): either way an
+// element naming a tag no node has is a load error, not a wrong vertex.
+TEST(MeshIo, MshElementOnAnUnknownNodeTagIsALoadError) {
+    for (const std::string tags : {"1\n2\n3\n4\n", "10\n20\n30\n40\n"}) {
+        const std::string path = temp_path("unknown_tag.msh");
+        write_text(path, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 4 1 40\n3 1 0 4\n" + tags +
+                             "0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 5\n"
+                             "$EndElements\n");
+        expect_load_error(path);
+    }
+}
+
 TEST(MeshIo, BadFilesAreLoadErrors) {
     expect_load_error(temp_path("does_not_exist.msh"));
     expect_load_error(temp_path("unknown.stl"));
