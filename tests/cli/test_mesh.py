@@ -23,6 +23,10 @@ def test_mesh_writes_report_and_vtk(name, tmp_path):
     assert report["input"]["path"].endswith(name)
     assert report["mesh"]["tets"] > 1000
     assert report["mesh"]["vertices"] > 100
+    # The nominal size is the mean edge length (gmsh's is about 0.77 of its mean edge), shorter
+    # where narrow faces keep the default size.
+    ratio = report["mesh"]["mean_edge"] / report["mesh"]["size"]
+    assert 0.9 < ratio < 1.1 if "narrow_faces" not in report["mesh"] else 0.5 < ratio < 1.0, ratio
     assert set(report["features"]["by_valence"]) == {"1", "2", "3", "4"}
     assert {"load", "mesh", "total"} <= set(report["timings_s"])
     assert "singularities" not in report  # mesh does not analyse

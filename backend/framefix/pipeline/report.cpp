@@ -202,7 +202,8 @@ std::string report_json(const RunResult& r) {
     j["input"] = {{"path", r.input_path}, {"kind", r.input_kind}};
     if (r.mesh) {
         const TetMesh& m = r.mesh->tets;
-        j["mesh"] = {{"vertices", m.num_vertices()}, {"tets", m.num_tets()}, {"size", m.size}};
+        j["mesh"] = {{"vertices", m.num_vertices()}, {"tets", m.num_tets()}, {"size", m.size},
+                     {"mean_edge", mean_edge_length(m, r.mesh->topology)}};
         if (!r.mesh->attempts.empty()) j["mesh"]["attempts"] = attempts_json(r.mesh->attempts);
         if (r.mesh->narrow_faces > 0) j["mesh"]["narrow_faces"] = r.mesh->narrow_faces;
         add_features(j, *r.mesh);
