@@ -2,9 +2,9 @@
 the loader tests use.
 
 Run with the interpreter FreeCAD embeds, from anywhere:
-    /usr/bin/python3 samples/make_samples.py
-It writes samples/*.step and tests/data/* next to this script. The output is committed;
-rerun only to change a model.
+    /usr/bin/python3 samples/make_samples.py [SAMPLE...]
+It writes samples/*.step and tests/data/* next to this script, or only the samples named. The
+output is committed; rerun only to change a model.
 """
 import os
 import sys
@@ -56,6 +56,42 @@ def box_arc_curved():
     lateral = [f for f in cutter.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
     arc = top.section(lateral)
     return imprint(part, arc.Edges)
+
+
+def box_arc_wide():
+    """A box_arc variant: a flat 1.5 x 1 x 0.4 box, the imprinted quarter circle r = 0.7."""
+    box = Part.makeBox(1.5, 1, 0.4)
+    arc = Part.makeCircle(0.7, V(1.5, 1, 0.4), V(0, 0, 1), 180, 270)
+    return imprint(box, [arc])
+
+
+def box_arc_small():
+    """A box_arc variant: a 1 x 1 x 0.8 box, the imprinted quarter circle r = 0.3."""
+    box = Part.makeBox(1, 1, 0.8)
+    arc = Part.makeCircle(0.3, V(1, 1, 0.8), V(0, 0, 1), 180, 270)
+    return imprint(box, [arc])
+
+
+def curved_box_arc(roof_radius, arc_radius):
+    """box [0,1]^3 under a roof cylinder (axis along x, 0.5 high in the middle), its top split by
+    the vertical cylinder of `arc_radius` around (1, 1)."""
+    box = Part.makeBox(1, 1, 1)
+    roof = Part.makeCylinder(roof_radius, 1, V(0, 0.5, 0.5 - roof_radius), V(1, 0, 0))
+    part = box.common(roof).removeSplitter()
+    top = [f for f in part.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
+    cutter = Part.makeCylinder(arc_radius, 2, V(1, 1, -0.5), V(0, 0, 1))
+    lateral = [f for f in cutter.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
+    return imprint(part, top.section(lateral).Edges)
+
+
+def box_arc_curved_flat():
+    """A box_arc_curved variant: a flatter roof (r = 3), the arc r = 0.4."""
+    return curved_box_arc(3, 0.4)
+
+
+def box_arc_curved_steep():
+    """A box_arc_curved variant: a steeper roof (r = 1.2), the arc r = 0.6."""
+    return curved_box_arc(1.2, 0.6)
 
 
 def half_sphere_box():
@@ -169,7 +205,7 @@ def l_prism():
 SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism,
            notch_filleted, half_sphere_box_filleted, groove_filleted,
            notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow,
-           groove_wide_filleted]
+           groove_wide_filleted, box_arc_wide, box_arc_small, box_arc_curved_flat, box_arc_curved_steep]
 
 
 def write_bad_inputs():
@@ -228,16 +264,20 @@ def write_meshing_cases():
     blade.exportStep(os.path.join(DATA, 'looped_blade.step'))
 
 
-def main():
+def main(names):
+    """Every sample and the test data, or only the samples named (the others keep their files)."""
     for make in SAMPLES:
+        if names and make.__name__ not in names:
+            continue
         solid = single_solid(make(), make.__name__)
         path = os.path.join(HERE, make.__name__ + '.step')
         solid.exportStep(path)
         print('%-16s faces %2d edges %2d volume %.5f' % (make.__name__, len(solid.Faces),
                                                           len(solid.Edges), solid.Volume))
-    write_bad_inputs()
-    write_meshing_cases()
+    if not names:
+        write_bad_inputs()
+        write_meshing_cases()
 
 
 if __name__ == '__main__':
-    main()
+    main(sys.argv[1:])
