@@ -64,6 +64,8 @@ int main(int argc, char** argv) {
         std::printf("iterations %d converged %d linear_iterations %d\nper solve:", f.iterations, int(f.converged),
                     f.linear_iterations);
         for (int it : f.solve_iterations) std::printf(" %d", it);
+        std::printf("\nchange per MBO iteration:");
+        for (double c : f.change_history) std::printf(" %.2g", c);
         std::printf("\n");
         std::printf("energy init %.6g final %.6g\n", f.initial_energy, f.energy);
         std::printf("peak_memory_mb %.1f\n", peak_memory_mb());

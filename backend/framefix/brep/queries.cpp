@@ -1,10 +1,10 @@
 // Geometric queries on a model, for tests and for corrections that snap to B-rep entities.
 #include <BRepAdaptor_Curve.hxx>
-#include <BRepGProp.hxx>
-#include <GProp_GProps.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
+#include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
 #include <TopoDS.hxx>
 
 #include "framefix/brep/occt_error.h"

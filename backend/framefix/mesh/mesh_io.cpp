@@ -37,9 +37,9 @@ TetMesh read_tet_mesh(const std::string& path) {
 
 namespace {
 
-// Tet faces (tet * 4 + lf) seen by exactly one tet, ordered by their sorted vertices. The faces are bucketed by their
-// smallest vertex and only each bucket (about 20 faces) is sorted: a sort of all 4 #T faces
-// was a fifth of reading a 1M-tet file.
+// Tet faces (tet * 4 + lf) seen by exactly one tet, ordered by their sorted vertices. The faces
+// are bucketed by their smallest vertex and only each bucket (about 20 faces) is sorted: a sort
+// of all 4 #T faces was a fifth of reading a 1M-tet file.
 std::vector<int> boundary_tet_faces(const Tets& tets, int nv) {
     const int nt = int(tets.rows());
     std::vector<int> start(size_t(nv) + 1, 0);

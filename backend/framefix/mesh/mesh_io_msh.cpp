@@ -41,7 +41,7 @@ public:
     }
     int find(long long tag) const {  // -1: unknown
         if (!dense_.empty()) return tag < lo_ || tag > hi_ ? -1 : dense_[size_t(tag - lo_)];
-        const auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::pair<long long, int>{tag, INT32_MIN});
+        const auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::pair<long long, int>{tag, INT_MIN});
         return it != pairs_.end() && it->first == tag ? it->second : -1;
     }
 

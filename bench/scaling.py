@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""Scaling table of the whole pipeline: `framefix blocks PART --method M` at sizes giving about
+50k, 200k, 1M and 2M tets; per run the tets, the seconds of each stage and the peak memory.
+
+    /usr/bin/python3 bench/scaling.py [--part samples/notch.step] [--method snap] [--threads 2]
+                                      [--json OUT.json]
+
+Prints a Markdown table; --json also writes the rows for scripts/plot_scaling.py. A benchmark:
+run it by hand on an otherwise idle machine, never as a test.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+TARGETS = [50e3, 200e3, 1e6, 2e6]  # tets; the default size gives about the first
+STAGES = ["load", "mesh", "field", "singularities", "correct", "blocks"]
+
+
+def run(binary, part, method, factor, threads, out):
+    cmd = [binary, "blocks", part, "--method", method, "--size-factor", "%.4f" % factor,
+           "--threads", str(threads), "--out", out, "--quiet"]
+    done = subprocess.run(cmd, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit("scaling: %s failed: %s" % (" ".join(cmd), done.stderr.strip()))
+    with open(os.path.join(out, "report.json")) as f:
+        report = json.load(f)
+    row = {"target": factor, "tets": report["mesh"]["tets"], "peak_mb": report["peak_memory_mb"]}
+    row.update({s: report["timings_s"].get(s, 0.0) for s in STAGES + ["total"]})
+    return row
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--part", default=os.path.join(ROOT, "samples", "notch.step"))
+    ap.add_argument("--method", default="snap")
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--binary", default=os.path.join(ROOT, "build", "bin", "framefix"))
+    ap.add_argument("--json")
+    a = ap.parse_args()
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for i, tets in enumerate(TARGETS):
+            factor = (TARGETS[0] / tets) ** (1.0 / 3.0)  # tets scale as size^-3
+            rows.append(run(a.binary, a.part, a.method, factor, a.threads, os.path.join(tmp, str(i))))
+    print("| tets | " + " | ".join(STAGES) + " | total s | peak MB |")
+    print("|---" * (len(STAGES) + 3) + "|")
+    for r in rows:
+        print("| {:,} | ".format(r["tets"]) + " | ".join("%.2f" % r[s] for s in STAGES) +
+              " | %.1f | %.0f |" % (r["total"], r["peak_mb"]))
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump({"part": a.part, "method": a.method, "threads": a.threads, "rows": rows}, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()
