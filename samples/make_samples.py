@@ -46,16 +46,21 @@ def box_arc():
     return imprint(box, [arc])
 
 
-def box_arc_curved():
-    # Top face: a cylinder of radius 2 with a horizontal axis along x, 0.5 high in the middle.
+def curved_box_arc(roof_radius, arc_radius):
+    """box [0,1]^3 under a roof cylinder (axis along x, 0.5 high in the middle), its top split by
+    the vertical cylinder of `arc_radius` around (1, 1)."""
     box = Part.makeBox(1, 1, 1)
-    roof = Part.makeCylinder(2, 1, V(0, 0.5, -1.5), V(1, 0, 0))
+    roof = Part.makeCylinder(roof_radius, 1, V(0, 0.5, 0.5 - roof_radius), V(1, 0, 0))
     part = box.common(roof).removeSplitter()
     top = [f for f in part.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
-    cutter = Part.makeCylinder(0.5, 2, V(1, 1, -0.5), V(0, 0, 1))
+    cutter = Part.makeCylinder(arc_radius, 2, V(1, 1, -0.5), V(0, 0, 1))
     lateral = [f for f in cutter.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
-    arc = top.section(lateral)
-    return imprint(part, arc.Edges)
+    return imprint(part, top.section(lateral).Edges)
+
+
+def box_arc_curved():
+    # Top face: a cylinder of radius 2 with a horizontal axis along x, 0.5 high in the middle.
+    return curved_box_arc(2, 0.5)
 
 
 def box_arc_wide():
@@ -70,18 +75,6 @@ def box_arc_small():
     box = Part.makeBox(1, 1, 0.8)
     arc = Part.makeCircle(0.3, V(1, 1, 0.8), V(0, 0, 1), 180, 270)
     return imprint(box, [arc])
-
-
-def curved_box_arc(roof_radius, arc_radius):
-    """box [0,1]^3 under a roof cylinder (axis along x, 0.5 high in the middle), its top split by
-    the vertical cylinder of `arc_radius` around (1, 1)."""
-    box = Part.makeBox(1, 1, 1)
-    roof = Part.makeCylinder(roof_radius, 1, V(0, 0.5, 0.5 - roof_radius), V(1, 0, 0))
-    part = box.common(roof).removeSplitter()
-    top = [f for f in part.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
-    cutter = Part.makeCylinder(arc_radius, 2, V(1, 1, -0.5), V(0, 0, 1))
-    lateral = [f for f in cutter.Faces if f.Surface.__class__.__name__ == 'Cylinder'][0]
-    return imprint(part, top.section(lateral).Edges)
 
 
 def box_arc_curved_flat():
