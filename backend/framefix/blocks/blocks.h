@@ -1,7 +1,7 @@
 #pragma once
 // Block decomposition of a (corrected) frame field (docs/algorithms.md#blocks):
 // separatrix sheets are traced from the singular curves (valence k: k sheets), from the concave
-// feature curves (2 inward sheets) and from the snapped paths of the boundary snapping (2 inward
+// feature curves (2 inward sheets), from the imprinted curves the field follows (1 sheet) and from the snapped paths of the boundary snapping (2 inward
 // sheets); the mesh edges the sheets cut split the vertices into components, the tets take their
 // vertices' majority label, and the labelling is cleaned until every block boundary is a closed
 // manifold. Each block is then checked to be a topological hexahedron (6 disk faces, 12 edges, 8
@@ -33,6 +33,9 @@ struct BlockOptions {
     double tube_radius = 1;        // mesh edges this close to a singular curve are cut, in h
     int min_component_vertices = 8;   // smaller vertex components adopt a neighbour's label
     double min_piece_fraction = 0.005;  // face-connected pieces below this fraction of the tets merge
+    // Rounds of "a block with at most 3 faces (a lens between two sheets that should be one)
+    // joins the neighbour it shares the most boundary with" (0 = off).
+    int lens_rounds = 10;
     double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
     // Patches touching <= 3 other patches merge below this area, in h^2: a face of a hexahedron has
     // 4 neighbouring faces, so such a patch is a sliver where four blocks meet along a line.
@@ -69,6 +72,15 @@ struct BlockPair {                 // two blocks that share boundary
     std::string reason;            // why not
 };
 
+struct BlockSurfaces {            // smoothed for display (docs/algorithms.md#block-surfaces)
+    Points points;                 // smoothed positions, model units
+    Triangles triangles;           // each block's boundary triangles, outward; an interface twice
+    Eigen::VectorXi block;         // #triangles: the block it bounds
+    Eigen::VectorXi neighbour;     // #triangles: the block across, -1 on the part's boundary
+    std::vector<Points> edges;     // each block's edges: polylines between its corners, smoothed
+    std::vector<int> edge_block;   // #edges: the block of each polyline
+};
+
 struct SheetSoup {                 // the separatrix sheets, for display (VTK)
     Points points;                 // #P x 3, model units
     Triangles triangles;           // #S x 3 indices into points
@@ -92,7 +104,11 @@ struct BlockDecomposition {
     int conforming_pairs = 0, pairs = 0;
     int flat_corners = 0, flat_edges = 0;    // summed over blocks (a shared edge counts in each block)
     SheetSoup sheets;
+    BlockSurfaces surfaces;        // smoothed block boundaries and edges, for display
     SheetStats stats;
+    // Imprinted curves (B-rep edge ids, ascending) the field does not follow: they emit no sheet
+    // and block faces run across them (the hex mesh will not follow them either).
+    std::vector<int> ignored_imprints;
     double h = 0;                  // mean mesh edge length used as the unit of the options
     double seconds = 0;            // total wall clock
     double seconds_sheets = 0, seconds_partition = 0, seconds_validation = 0;

@@ -1,10 +1,13 @@
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <omp.h>
 
+#include "framefix/blocks/block_surfaces.h"
 #include "framefix/blocks/blocks.h"
 #include "framefix/blocks/partition.h"
 #include "framefix/blocks/sheets.h"
@@ -33,71 +36,57 @@ void check_inputs(const TetMesh& mesh, const TetTopology& topo, const FrameField
                                   " faces, topology " + std::to_string(topo.faces.rows()) + "; re-extract singularities");
 }
 
-// CAD surface group of each topology face (-1 inside): B-rep faces joined across boundary edges
-// that are not feature curves (e.g. a cylinder's seam), so one block face is not split there.
-std::vector<int> surface_groups(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features) {
+// CAD surface group of each topology face (-1 inside): connected boundary triangles, split at
+// feature curves and snapped paths (a snapped path is a block edge: the hex layers meet the
+// surface there at 45 degrees), joined across everything else: a cylinder's seam, and the
+// imprinted curves the field ignores (`ignored`). So one block face is not split there.
+std::vector<int> surface_groups(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                                const std::vector<int>& ignored, const std::vector<SnappedPath>& paths) {
     const std::uint64_t nv = mesh.num_vertices();
     auto ekey = [nv](int a, int b) { return edge_key(a, b, nv); };
-    std::unordered_map<PairKey, int> feature_edge;
+    std::unordered_set<PairKey> border;
     for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
-        if (features.valence_of(mesh.edge_tags[e]) > 0) feature_edge[ekey(mesh.feature_edges(e, 0), mesh.feature_edges(e, 1))] = 1;
-    const int max_tag = mesh.face_tags.size() ? mesh.face_tags.maxCoeff() : 0;
-    DisjointSet groups(max_tag + 1);  // merge_into: the group ids are roots, they label block faces
-    std::unordered_map<PairKey, int> edge_tag;
-    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b)
+        if (features.valence_of(mesh.edge_tags[e]) > 0 &&
+            !std::binary_search(ignored.begin(), ignored.end(), mesh.edge_tags[e]))
+            border.insert(ekey(mesh.feature_edges(e, 0), mesh.feature_edges(e, 1)));
+    for (const SnappedPath& p : paths)
+        for (size_t i = 0; i + 1 < p.vertices.size(); ++i) border.insert(ekey(p.vertices[i], p.vertices[i + 1]));
+    const int nb = int(mesh.boundary_faces.rows());
+    DisjointSet groups(nb);
+    std::unordered_map<PairKey, int> first_face;  // boundary edge -> the first boundary face seen on it
+    for (int b = 0; b < nb; ++b)
         for (int k = 0; k < 3; ++k) {
             const PairKey key = ekey(mesh.boundary_faces(b, k), mesh.boundary_faces(b, (k + 1) % 3));
-            auto [it, fresh] = edge_tag.try_emplace(key, mesh.face_tags[b]);
-            if (!fresh && it->second != mesh.face_tags[b] && !feature_edge.count(key))
-                groups.merge_into(it->second, mesh.face_tags[b]);
+            auto [it, fresh] = first_face.try_emplace(key, b);
+            if (!fresh && !border.count(key)) groups.unite(it->second, b);
         }
-    std::unordered_map<TriangleKey, int, TriangleKeyHash> tag_of;  // sorted triangle -> B-rep face
+    std::unordered_map<TriangleKey, int, TriangleKeyHash> face_of;  // sorted triangle -> boundary face
     auto tkey = [](const auto& f) { return triangle_key(f(0), f(1), f(2)); };
-    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) tag_of[tkey(mesh.boundary_faces.row(b))] = mesh.face_tags[b];
+    for (int b = 0; b < nb; ++b) face_of[tkey(mesh.boundary_faces.row(b))] = b;
     std::vector<int> group(topo.faces.rows(), -1);
     for (int f = 0; f < int(topo.faces.rows()); ++f) {
         if (topo.face_tets(f, 1) >= 0) continue;
-        auto it = tag_of.find(tkey(topo.faces.row(f)));
-        group[f] = it == tag_of.end() ? 0 : groups.find(it->second);
+        auto it = face_of.find(tkey(topo.faces.row(f)));
+        group[f] = it == face_of.end() ? 0 : groups.find(it->second);
     }
     return group;
 }
 
-}  // namespace
+struct Validated {
+    std::vector<std::vector<BoundaryTriangle>> surface;  // per block: its boundary triangles
+    std::vector<BlockFaces> faces;               // per block, for the conformity check
+    std::vector<std::map<int, int>> shared;      // per block: neighbour -> shared triangles
+};
 
-BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
-                                const FrameField& field, const SingularityGraph& graph,
-                                const std::vector<SnappedPath>& paths, const BlockOptions& options) {
-    check_inputs(mesh, topo, field, graph);
-    const auto t0 = Clock::now();
-    BlockDecomposition out;
-    const double h = mean_edge_length(mesh, topo, 1);
-    out.h = h;
-    const TetLocator locator(mesh, topo);
-
-    // Sheets.
-    std::vector<SheetSource> sources = singular_sources(mesh, field, graph, locator, h, options);
-    std::vector<SheetSource> feature = feature_sources(mesh, features, field, paths);
-    sources.insert(sources.end(), feature.begin(), feature.end());
-    const Points singular = singular_points(graph);
-    out.sheets = build_sheets(mesh, field, locator, sources, singular, h, options, out.stats);
-    out.seconds_sheets = since(t0);
-
-    // Partition.
-    const auto t1 = Clock::now();
-    std::vector<char> cut = cut_by_sheets(mesh, topo, out.sheets, options.threads);
-    cut_near_polylines(mesh, topo, singular, options.tube_radius * h, cut);
-    out.stats.cut_edges = int(std::count(cut.begin(), cut.end(), 1));
-    out.tet_block = clean_staircase(mesh, topo, partition_tets(mesh, topo, cut, options));
-    out.count = compact_labels(out.tet_block);
-    out.seconds_partition = since(t1);
-
-    // Validation.
-    const auto t2 = Clock::now();
-    const std::vector<int> group = surface_groups(mesh, topo, features);
-    std::vector<std::vector<BoundaryTriangle>> surface(out.count);
+// Each block's boundary triangles (labelled by neighbour block or surface group), validated as
+// a hexahedron; fills out.blocks.
+Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                          const BlockOptions& options, BlockDecomposition& out) {
     out.blocks.assign(out.count, BlockInfo{});
-    std::vector<std::set<int>> neighbours(out.count);
+    Validated v;
+    v.shared.assign(out.count, {});
+    v.surface.assign(out.count, {});
+    auto& surface = v.surface;
     for (int f = 0; f < int(topo.faces.rows()); ++f) {
         const int ta = topo.face_tets(f, 0), tb = topo.face_tets(f, 1);
         const int la = out.tet_block[ta], lb = tb >= 0 ? out.tet_block[tb] : -1;
@@ -114,7 +103,7 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
             for (int k = 0; k < 4; ++k) inner += mesh.points.row(mesh.tets(t, k)).transpose() / 4;
             if (tri.normal.dot(p0 - inner) < 0) tri.normal = -tri.normal;
             surface[b].push_back(tri);
-            if (other >= 0) neighbours[b].insert(other);
+            if (other >= 0) v.shared[b][other] += 1;
         }
     }
     for (int t = 0; t < mesh.num_tets(); ++t) {
@@ -122,22 +111,95 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
         info.tets.push_back(t);
         info.volume += tet_volume(mesh, t);
     }
-    std::vector<BlockFaces> faces(out.count);
+    v.faces.resize(out.count);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads > 0 ? options.threads : omp_get_max_threads())
     for (int b = 0; b < out.count; ++b) {
         BlockInfo& info = out.blocks[b];
-        faces[b] = validate_block(mesh, surface[b], h, options, info);
-        info.neighbours.assign(neighbours[b].begin(), neighbours[b].end());
+        v.faces[b] = validate_block(mesh, surface[b], h, options, info);
+        for (auto [o, n] : v.shared[b]) info.neighbours.push_back(o);
         std::set<int> verts;
         for (int t : info.tets) for (int k = 0; k < 4; ++k) verts.insert(mesh.tets(t, k));
         for (int v : verts) info.centroid += mesh.points.row(v).transpose() / double(verts.size());
     }
-    out.neighbour_pairs = check_conformity(faces, options.conform_tolerance * h);
+    return v;
+}
+
+// Each block with at most 3 faces joins the neighbour it shares the most boundary triangles with
+// (a non-lens one first). True if any block changed.
+bool merge_lenses(const std::vector<std::map<int, int>>& shared, BlockDecomposition& out) {
+    auto lens = [&](int b) { return out.blocks[b].faces <= 3 && !out.blocks[b].neighbours.empty(); };
+    std::vector<int> into(out.count, -1);
+    for (int b = 0; b < out.count; ++b) {
+        if (!lens(b)) continue;
+        int best = -1;
+        for (int o : out.blocks[b].neighbours)
+            if (best < 0 || (lens(best) && !lens(o)) ||
+                (lens(best) == lens(o) && shared[b].at(o) > shared[b].at(best)))
+                best = o;
+        into[b] = best;
+    }
+    bool any = false;
+    for (int b = 0; b < out.count; ++b) {
+        if (into[b] < 0 || (lens(into[b]) && into[into[b]] == b && b < into[b])) continue;  // no swaps
+        any = true;
+    }
+    if (!any) return false;
+    for (int t = 0; t < int(out.tet_block.size()); ++t) {
+        const int b = out.tet_block[t];
+        if (into[b] >= 0 && !(into[into[b]] == b && b < into[b])) out.tet_block[t] = into[b];
+    }
+    return true;
+}
+
+}  // namespace
+
+BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                                const FrameField& field, const SingularityGraph& graph,
+                                const std::vector<SnappedPath>& paths, const BlockOptions& options) {
+    check_inputs(mesh, topo, field, graph);
+    const auto t0 = Clock::now();
+    BlockDecomposition out;
+    const double h = mean_edge_length(mesh, topo, 1);
+    out.h = h;
+    const TetLocator locator(mesh, topo);
+
+    // Sheets.
+    std::vector<SheetSource> sources = singular_sources(mesh, field, graph, locator, h, options);
+    const std::vector<int> imprints = followed_imprints(mesh, features, field);
+    for (const EdgeFeature& e : features.edges)
+        if (e.valence == 2 && !std::binary_search(imprints.begin(), imprints.end(), e.edge)) out.ignored_imprints.push_back(e.edge);
+    std::sort(out.ignored_imprints.begin(), out.ignored_imprints.end());
+    std::vector<SheetSource> feature = feature_sources(mesh, features, field, imprints, paths);
+    sources.insert(sources.end(), feature.begin(), feature.end());
+    const Points singular = singular_points(graph);
+    out.sheets = build_sheets(mesh, field, locator, sources, singular, h, options, out.stats);
+    out.seconds_sheets = since(t0);
+
+    // Partition.
+    const auto t1 = Clock::now();
+    std::vector<char> cut = cut_by_sheets(mesh, topo, out.sheets, options.threads);
+    cut_near_polylines(mesh, topo, singular, options.tube_radius * h, cut);
+    out.stats.cut_edges = int(std::count(cut.begin(), cut.end(), 1));
+    out.tet_block = clean_staircase(mesh, topo, partition_tets(mesh, topo, cut, options));
+    out.count = compact_labels(out.tet_block);
+    out.seconds_partition = since(t1);
+
+    // Validation; lenses join a neighbour and the blocks are validated again.
+    const auto t2 = Clock::now();
+    const std::vector<int> group = surface_groups(mesh, topo, features, out.ignored_imprints, paths);
+    Validated v = validate_blocks(mesh, topo, group, h, options, out);
+    for (int round = 0; round < options.lens_rounds && merge_lenses(v.shared, out); ++round) {
+        out.tet_block = clean_staircase(mesh, topo, out.tet_block);
+        out.count = compact_labels(out.tet_block);
+        v = validate_blocks(mesh, topo, group, h, options, out);
+    }
+    out.neighbour_pairs = check_conformity(v.faces, options.conform_tolerance * h);
     for (const BlockInfo& b : out.blocks)
         out.valid += b.valid, out.flat_edges += b.flat_edges, out.flat_corners += b.flat_corners;
     out.pairs = int(out.neighbour_pairs.size());
     for (const BlockPair& p : out.neighbour_pairs) out.conforming_pairs += p.conforming;
     out.seconds_validation = since(t2);
+    out.surfaces = block_surfaces(mesh, v.surface, v.faces);
     out.seconds = since(t0);
     return out;
 }

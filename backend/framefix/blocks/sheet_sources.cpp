@@ -101,8 +101,29 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
     return out;
 }
 
-std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features,
-                                         const FrameField& field, const std::vector<SnappedPath>& paths) {
+std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& features, const FrameField& field) {
+    // 15 deg: an arc the field follows stays within a few degrees; one it ignores deviates by up
+    // to 45 deg (a quarter arc under a constant frame: 22 deg on average).
+    constexpr double kFollowDeg = 15;
+    std::vector<int> imprinted, out;
+    for (const EdgeFeature& e : features.edges)
+        if (e.valence == 2) imprinted.push_back(e.edge);
+    for (const FeatureSeeds& curve : feature_seeds(mesh, features, field, imprinted)) {
+        double sum = 0;
+        int n = 0;
+        for (size_t i = 1; i + 1 < curve.seeds.size(); ++i, ++n) {  // the ends take a corner's frame
+            double best = 0;
+            for (int k = 0; k < 3; ++k) best = std::max(best, std::abs(axis(field, curve.seeds[i].vertex, k).dot(curve.seeds[i].tangent)));
+            sum += std::acos(std::min(best, 1.0)) * 180 / M_PI;
+        }
+        if (n > 0 && sum / n <= kFollowDeg) out.push_back(curve.edge);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features, const FrameField& field,
+                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths) {
     const int nv = mesh.num_vertices();
     std::vector<Eigen::Vector3d> vert_normal(nv, Eigen::Vector3d::Zero());  // outward area normals
     for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) {
@@ -117,13 +138,13 @@ std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& 
         if (features.valence_of(mesh.edge_tags[e]) > 0) on_feature[mesh.feature_edges(e, 0)] = on_feature[mesh.feature_edges(e, 1)] = 1;
 
     std::vector<SheetSource> out;
-    std::vector<int> concave;
+    std::vector<int> edges = imprints;
     for (const EdgeFeature& e : features.edges)
-        if (e.valence == 3) concave.push_back(e.edge);
-    for (const FeatureSeeds& curve : feature_seeds(mesh, features, field, concave)) {
+        if (e.valence == 3) edges.push_back(e.edge);
+    for (const FeatureSeeds& curve : feature_seeds(mesh, features, field, edges)) {
         SheetSource src;
-        src.kind = SheetSource::Concave;
-        src.name = "concave:" + std::to_string(curve.edge);
+        src.kind = curve.valence == 2 ? SheetSource::Imprinted : SheetSource::Concave;
+        src.name = (curve.valence == 2 ? "imprinted:" : "concave:") + std::to_string(curve.edge);
         src.boundary_end[0] = src.boundary_end[1] = true;
         for (const FeatureSeed& f : curve.seeds) src.seeds.push_back({f.point, f.tangent, f.directions});
         out.push_back(std::move(src));

@@ -17,8 +17,9 @@ struct SheetSeed {
 };
 
 struct SheetSource {
-    enum Kind { Singular, Concave, Snapped } kind = Singular;
-    std::string name;                  // "singular:<curve id>" | "concave:<B-rep edge>" | "snapped:<path>"
+    enum Kind { Singular, Concave, Imprinted, Snapped } kind = Singular;
+    // "singular:<curve id>" | "concave:<B-rep edge>" | "imprinted:<B-rep edge>" | "snapped:<path>"
+    std::string name;
     std::vector<SheetSeed> seeds;      // in curve order, about one per h
     bool boundary_end[2] = {false, false};  // source end lies on the boundary: extend the sheet past it
 };
@@ -29,10 +30,17 @@ struct SheetSource {
 std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
                                           const TetLocator& locator, double h, const BlockOptions& options);
 
+// Imprinted feature curves (valence 2) that the field follows: at the curve's inner vertices the
+// frame axis closest to the tangent is within kFollowDeg of it on average. A field that ignores an
+// imprint (box with an arc after snapping: "as if there were no imprinted curve") gives the blocks
+// no reason to follow it. B-rep edge ids, ascending.
+std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& features, const FrameField& field);
+
 // Concave feature curves (valence 3): one seed per curve vertex, directions = the frame axes
-// closest to -n1, -n2 (the inward continuations of the two faces). Snapped paths: one seed per
-// path vertex, directions = the two axes with a.n < -0.3 (the 45 deg path frame's inward axes).
-std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features,
-                                         const FrameField& field, const std::vector<SnappedPath>& paths);
+// closest to -n1, -n2 (the inward continuations of the two faces). Followed imprinted curves
+// (`imprints`): one direction, the axis closest to -n. Snapped paths: one seed per path vertex,
+// directions = the two axes with a.n < -0.3 (the 45 deg path frame's inward axes).
+std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features, const FrameField& field,
+                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths);
 
 }  // namespace framefix

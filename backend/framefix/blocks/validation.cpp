@@ -291,6 +291,8 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
         }
         for (size_t c = 0; c < clusters.size(); ++c)
             for (int p : corner_patches[c]) out.corners[p].push_back(corner_pos[c]);
+        out.cleaned.resize(nf);
+        for (int i = 0; i < nf; ++i) out.cleaned[i] = out.label[patch[i]];
     }
 
     const std::pair<bool, std::string> tests[] = {

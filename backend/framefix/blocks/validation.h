@@ -19,6 +19,7 @@ struct BoundaryTriangle {
 struct BlockFaces {                // the cleaned patches of one block, for the conformity check
     std::vector<int> label;        // per patch: neighbouring block id, or -1 - CAD surface group
     std::vector<std::vector<Eigen::Vector3d>> corners;  // per patch: positions of its corners
+    std::vector<int> cleaned;      // per input triangle: the label of its patch after cleaning
 };
 
 // Counts faces/edges/corners of one block's boundary, with `h` the unit of the options. Fills

@@ -135,6 +135,39 @@ VtkGrid blocks_grid(const TetMesh& m, const BlockDecomposition& b) {
     return g;
 }
 
+VtkGrid block_surfaces_grid(const BlockDecomposition& b) {
+    const BlockSurfaces& s = b.surfaces;
+    VtkGrid g;
+    g.points = s.points;
+    VtkArray block{"block", 1, {}}, across{"neighbour", 1, {}}, valid{"block_valid", 1, {}};
+    for (int t = 0; t < s.triangles.rows(); ++t) {
+        g.cells.push_back({s.triangles(t, 0), s.triangles(t, 1), s.triangles(t, 2)});
+        g.cell_types.push_back(kVtkTriangle);
+        block.data.push_back(s.block[t]);
+        across.data.push_back(s.neighbour[t]);
+        valid.data.push_back(s.block[t] < int(b.blocks.size()) && b.blocks[s.block[t]].valid);
+    }
+    g.cell_data = {block, across, valid};
+    return g;
+}
+
+VtkGrid block_edges_grid(const BlockSurfaces& s) {
+    VtkGrid g;
+    VtkArray block{"block", 1, std::vector<double>(s.edge_block.begin(), s.edge_block.end())};
+    g.cell_data = {block};
+    int n = 0;
+    for (const Points& p : s.edges) n += int(p.rows());
+    g.points.resize(n, 3);
+    int r = 0;
+    for (const Points& p : s.edges) {
+        std::vector<int> cell;
+        for (int i = 0; i < p.rows(); ++i) g.points.row(r) = p.row(i), cell.push_back(r++);
+        g.cells.push_back(cell);
+        g.cell_types.push_back(kVtkPolyline);
+    }
+    return g;
+}
+
 VtkGrid sheets_grid(const SheetSoup& s) {
     VtkGrid g;
     g.points = s.points;
@@ -194,8 +227,9 @@ std::vector<std::string> write_outputs(const RunResult& r, const std::string& di
     if (const auto& blocks = r.blocks) {
         write_vtk(blocks_grid(r.mesh->tets, *blocks), path("blocks.vtk"), "FrameFix blocks (tets labelled by block)");
         write_vtk(sheets_grid(blocks->sheets), path("sheets.vtk"), "FrameFix separatrix sheets");
-        written.push_back(path("blocks.vtk"));
-        written.push_back(path("sheets.vtk"));
+        write_vtk(block_surfaces_grid(*blocks), path("block_surfaces.vtk"), "FrameFix block boundaries, smoothed for display");
+        write_vtk(block_edges_grid(blocks->surfaces), path("block_edges.vtk"), "FrameFix block edges, smoothed for display");
+        for (const char* name : {"blocks.vtk", "sheets.vtk", "block_surfaces.vtk", "block_edges.vtk"}) written.push_back(path(name));
     }
     std::ofstream out(path("report.json"));
     out << report_json(r) << '\n';

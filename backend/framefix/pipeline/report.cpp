@@ -170,6 +170,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"pairs", b.pairs},
             {"flat_corners", b.flat_corners},
             {"flat_edges", b.flat_edges},
+            {"ignored_imprints", b.ignored_imprints},
             {"blocks", blocks},
             {"neighbour_pairs", pairs},
             {"seconds", {{"sheets", b.seconds_sheets}, {"partition", b.seconds_partition},
