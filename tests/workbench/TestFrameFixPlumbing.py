@@ -11,7 +11,7 @@ import unittest
 import FreeCAD
 import Part
 
-from framefix_wb import analysis, backend, info, job, make, report, runner, runs, shapes, sizing
+from framefix_wb import analysis, backend, info, job, make, report, runner, runs, shapes, sizing, style
 from framefix_wb.errors import BackendError, FrameFixError, SelectionError
 from framefix_wb.objects.properties import report_of
 
@@ -446,9 +446,31 @@ class BlocksPlumbing(unittest.TestCase):
         group = blocks.getParentGroup()
         self.assertEqual(group.Label, "FrameFix blocks (auto: snap) of Box")  # auto kept snap
         names = sorted(type(o.Proxy).__name__ for o in group.Group)
-        self.assertEqual(names, ["Blocks", "FeatureCurves", "SingularCurves", "SingularNodes",
-                                 "SnappedPaths"])
+        self.assertEqual(names, ["BlockEdges", "BlockSurfaces", "Blocks", "FeatureCurves",
+                                 "SingularCurves", "SingularNodes", "SnappedPaths"])
         self.assertEqual(blocks.Analysis.Curves35, 0)
+
+    def test_block_surfaces_one_shell_per_block_coloured_on_the_app_side(self):
+        blocks = analysis.make_blocks(self.box, 0.5)
+        surfaces = self.doc.getObject("BlockSurfaces")
+        self.assertEqual(len(surfaces.Shape.Faces), 12)
+        self.assertEqual(len(surfaces.Shape.Shells), 2)
+        self.assertEqual(list(surfaces.BlockOfFace), [0] * 6 + [1] * 6)
+        self.assertAlmostEqual(surfaces.Shape.Area, 6.0)
+        red = tuple(style.INVALID_BLOCK_COLOR)
+        colours = [tuple(round(c, 3) for c in col[:3]) for col in surfaces.BlockColors]
+        self.assertEqual(colours[1], tuple(round(c, 3) for c in red))  # block 1 is invalid
+        self.assertNotEqual(colours[0], colours[1])
+        self.assertEqual(len(blocks.BlockColors), 2)
+        edges = self.doc.getObject("BlockEdges")
+        self.assertEqual(len(edges.Shape.Edges), 5)  # polylines of 3 and 4 points
+
+    def test_neighbouring_blocks_get_different_colours(self):
+        ring = [{"id": i, "valid": True, "neighbours": [(i - 1) % 5, (i + 1) % 5]} for i in range(5)]
+        colours = style.block_colors(ring)
+        for i in range(5):
+            self.assertNotEqual(colours[i], colours[(i + 1) % 5])
+        self.assertNotIn(tuple(style.INVALID_BLOCK_COLOR), [tuple(c) for c in colours])
 
     def test_blocks_without_correction_have_no_snapped_paths(self):
         blocks = analysis.make_blocks(self.box, 0.5, method="none")
@@ -493,6 +515,11 @@ class BlocksPlumbing(unittest.TestCase):
         self.doc.recompute()
         self.assertTrue(blocks.isValid())
         self.assertEqual(blocks.FemMesh.VolumeCount, 6)
+        surfaces = self.doc.getObject("BlockSurfaces")
+        surfaces.touch()
+        self.doc.recompute()
+        self.assertTrue(surfaces.isValid())
+        self.assertEqual(len(surfaces.Shape.Faces), 12)
 
     def test_failing_backends_through_blocks_leave_the_document_unchanged(self):
         names = sorted(o.Name for o in self.doc.Objects)
@@ -525,6 +552,24 @@ class BlocksPlumbing(unittest.TestCase):
                 f.write("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"
                         "POINTS 8 double\n0 0 0\n")
             with self.assertRaisesRegex(BackendError, "blocks.vtk is unusable"):
+                j.finish(0)
+        finally:
+            j.cleanup()
+
+    def test_bad_block_surfaces_are_refused(self):
+        use_backend("canned.py")
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.5, blocks=True)
+        try:
+            runner.run_sync(j)
+            path = os.path.join(j.out_dir, "block_surfaces.vtk")
+            with open(path) as f:
+                text = f.read()
+            with open(path, "w") as f:
+                f.write(text.replace("3 0 2 3", "3 0 2 99"))
+            with self.assertRaisesRegex(BackendError, "block_surfaces.vtk is unusable: a cell names"):
+                j.finish(0)
+            os.unlink(path)
+            with self.assertRaisesRegex(BackendError, "wrote no block_surfaces.vtk"):
                 j.finish(0)
         finally:
             j.cleanup()

@@ -36,11 +36,15 @@ def scenario(h):
     yield 1.0
     h.check(panel.runner.is_running(), "the backend runs while the GUI stays responsive")
     yield h.until(lambda: not panel.runner.is_running(), 600, "the backend to finish")
+    # The objects come after the run: building the block surfaces takes a second or two.
+    yield h.until(lambda: "blocks" in panel.form.summary.text(), 120, "the results in the panel")
     yield 0.5
     curves = panel.analysis
     blocks = make.blocks_of(curves) if curves is not None else None
-    h.check(blocks is not None and blocks.isValid(), "Blocks object exists: %s"
-            % panel.form.summary.text())
+    texts = [w.text() for w in panel.form.findChildren(QtWidgets.QLabel) if w.text()] + [
+        w.toPlainText() for w in panel.form.findChildren(QtWidgets.QTextEdit)]
+    h.check(blocks is not None and blocks.isValid(), "Blocks object exists: %s | %s"
+            % (panel.form.summary.text(), " | ".join(texts)[:600]))
     if blocks is None:
         return
     report = report_of(curves)

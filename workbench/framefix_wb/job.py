@@ -15,7 +15,7 @@ import tempfile
 from .backend import find_backend
 from .errors import BackendError
 from .report import load_report
-from .vtk import read_tets
+from .vtk import VTK_POLY_LINE, VTK_TRIANGLE, read_cells, read_tets
 
 DEFAULT_TIMEOUT_S = 1800.0
 # Share of the whole run each backend stage takes, measured roughly on the samples, by
@@ -64,6 +64,8 @@ def timeout_from_env(default=DEFAULT_TIMEOUT_S):
 
 
 BLOCKS_VTK = "blocks.vtk"  # the tets labelled by block, beside report.json
+BLOCK_SURFACES_VTK = "block_surfaces.vtk"  # each block's boundary, smoothed for display
+BLOCK_EDGES_VTK = "block_edges.vtk"  # each block's edges, smoothed polylines
 FILLETED_BREP = "filleted.brep"  # the fillet correction's solid, beside report.json
 
 
@@ -135,12 +137,21 @@ class AnalysisJob:
                                       or mesh["block"].max() >= report["blocks"]["count"]):
                 raise BackendError("the backend's %s names blocks its report does not have"
                                    % BLOCKS_VTK)
+            mesh["surfaces"] = self._block_cells(BLOCK_SURFACES_VTK, VTK_TRIANGLE, ("block",), report)
+            mesh["edges"] = self._block_cells(BLOCK_EDGES_VTK, VTK_POLY_LINE, ("block",), report)
             report["block_mesh"] = mesh
         filleted = os.path.join(self.out_dir, FILLETED_BREP)
         if os.path.exists(filleted):
             with open(filleted) as f:
                 report["filleted_brep"] = f.read()
         return report
+
+    def _block_cells(self, name, cell_type, arrays, report):
+        cells = read_cells(os.path.join(self.out_dir, name), cell_type, arrays)
+        blocks = cells["block"]
+        if len(blocks) and (blocks.min() < 0 or blocks.max() >= report["blocks"]["count"]):
+            raise BackendError("the backend's %s names blocks its report does not have" % name)
+        return cells
 
     def timeout_error(self):
         return BackendError("the backend did not finish within %.0f s and was stopped%s"

@@ -13,6 +13,7 @@ import FreeCAD
 
 from . import runs, shapes, style
 from .errors import FrameFixError
+from .objects.block_surfaces import BlockEdges, BlockSurfaces
 from .objects.blocks import Blocks
 from .objects.feature_curves import FeatureCurves
 from .objects.filleted_part import FilletedPart
@@ -23,6 +24,7 @@ from .objects.snapped_paths import SnappedPaths
 from .objects.streamlines import Streamlines
 
 if FreeCAD.GuiUp:
+    from .viewproviders.block_surfaces import ViewProviderBlockEdges, ViewProviderBlockSurfaces
     from .viewproviders.blocks import ViewProviderBlocks
     from .viewproviders.feature_curves import ViewProviderFeatureCurves
     from .viewproviders.mapped_curves import ViewProviderMappedCurves
@@ -34,7 +36,8 @@ if FreeCAD.GuiUp:
                       SingularNodes: ViewProviderSingularNodes,
                       FeatureCurves: ViewProviderFeatureCurves,
                       SnappedPaths: ViewProviderSnappedPaths, Streamlines: ViewProviderStreamlines,
-                      MappedCurves: ViewProviderMappedCurves, Blocks: ViewProviderBlocks}
+                      MappedCurves: ViewProviderMappedCurves, Blocks: ViewProviderBlocks,
+                      BlockSurfaces: ViewProviderBlockSurfaces, BlockEdges: ViewProviderBlockEdges}
 else:
     VIEW_PROVIDERS = {}
 
@@ -185,7 +188,9 @@ def _add_parts(doc, method, blocks, report):
     for name, label, proxy in _method_objects(_methods_run(method, report)):
         parts.append(_add(doc, "Part::FeaturePython", name, label, proxy))
     if blocks:
-        parts.append(_add(doc, "Fem::FemMeshObjectPython", "Blocks", "Blocks", Blocks))
+        parts.append(_add(doc, "Fem::FemMeshObjectPython", "Blocks", "Blocks (tets)", Blocks))
+        parts.append(_add(doc, "Part::FeaturePython", "BlockSurfaces", "Block surfaces", BlockSurfaces))
+        parts.append(_add(doc, "Part::FeaturePython", "BlockEdges", "Block edges", BlockEdges))
     for part in parts[1:]:
         part.Analysis = curves
     return curves, parts

@@ -166,8 +166,12 @@ def _blocks(b):
     for i, item in enumerate(items):
         if not isinstance(item, dict):
             _fail("blocks.blocks[%d] is not an object" % i)
+        neighbours = item.get("neighbours") or []
+        if not isinstance(neighbours, list) or not all(
+                isinstance(n, int) and 0 <= n < out["count"] for n in neighbours):
+            _fail("blocks.blocks[%d].neighbours are not block ids" % i)
         out["blocks"].append({"id": int(item.get("id", i)), "tets": int(item.get("tets", 0)),
-                              "valid": bool(item.get("valid")),
+                              "valid": bool(item.get("valid")), "neighbours": neighbours,
                               "reason": str(item.get("reason") or "")})
     return out
 

@@ -45,6 +45,8 @@ def legend_html(table, codes_present=None):
 # Blocks: one colour per block (hues around the wheel, skipping red), invalid ones red.
 INVALID_BLOCK_COLOR = (0.90, 0.10, 0.10)
 BLOCKS_TRANSPARENCY = 30
+BLOCK_EDGE_COLOR = (0.10, 0.10, 0.12)
+BLOCK_EDGE_WIDTH = 2.0
 _BLOCK_HUES = (0.58, 0.12, 0.33, 0.80, 0.48, 0.17, 0.68, 0.27, 0.90, 0.40, 0.07, 0.53)
 
 
@@ -58,11 +60,23 @@ def block_color(block, valid):
     return colorsys.hls_to_rgb(hue, light, 0.65)
 
 
-def blocks_legend_html(count, valid_flags):
-    """The blocks' colour swatches, invalid ones named."""
+def block_colors(blocks):
+    """One colour per block of a report's blocks list: valid blocks take the first hue that
+    none of their already coloured neighbours has (greedy, in block order), invalid ones red."""
+    index = {}
+    for i, b in enumerate(blocks):
+        taken = {index.get(n) for n in b["neighbours"]}
+        index[i] = next(k for k in range(len(blocks) + 1) if k not in taken)
+    return [block_color(index[i], b["valid"]) for i, b in enumerate(blocks)]
+
+
+def blocks_legend_html(blocks):
+    """The colour swatches of a report's blocks list, invalid ones named."""
     rows = []
-    for b in range(count):
-        rgb = block_color(b, valid_flags[b])
+    colors = block_colors(blocks)
+    valid_flags = [b["valid"] for b in blocks]
+    for b in range(len(blocks)):
+        rgb = colors[b]
         hexcol = "#%02x%02x%02x" % tuple(int(255 * c) for c in rgb)
         rows.append('<span style="color:%s">&#9632;</span> %d%s'
                     % (hexcol, b, "" if valid_flags[b] else " (invalid)"))

@@ -1,4 +1,5 @@
-"""Reading the backend's legacy ASCII VTK tet meshes (blocks.vtk): checked plain data.
+"""Reading the backend's legacy ASCII VTK files: the tets of blocks.vtk, the triangles of
+block_surfaces.vtk and the polylines of block_edges.vtk, as checked plain data.
 
 Like report.json, the file comes from a child process that may have died half-way: counts,
 cell types, indices and cell data are checked once here; a bad file is a BackendError.
@@ -10,6 +11,7 @@ import numpy
 from .errors import BackendError
 
 VTK_TETRA = 10
+VTK_POLY_LINE, VTK_TRIANGLE = 4, 5
 
 
 def _fail(path, what):
@@ -67,3 +69,48 @@ def read_tets(path, arrays=("block",)):
     if not numpy.isfinite(points).all():
         _fail(path, "a point is not finite")
     return dict(data, points=points, tets=tets)
+
+
+def _read_text(path):
+    try:
+        with open(path, encoding="ascii") as f:
+            return f.read()
+    except FileNotFoundError:
+        raise BackendError("the backend finished but wrote no %s" % path.rsplit("/", 1)[-1]) from None
+    except (OSError, UnicodeDecodeError) as e:
+        _fail(path, str(e))
+
+
+def read_cells(path, cell_type, arrays=()):
+    """{"points": (n, 3) floats, "cells": list of int arrays, "<array>": one int per cell} of a
+    legacy ASCII UNSTRUCTURED_GRID whose cells are all of VTK type `cell_type` (triangles of 3
+    points, polylines of 2 or more)."""
+    text = _read_text(path)
+    try:
+        m = _header(text, r"^POINTS (\d+) \w+\s")
+        n = int(m.group(1))
+        points = _numbers(text, m.end(), 3 * n, float).reshape(n, 3)
+        m = _header(text, r"^CELLS (\d+) (\d+)\s", m.end())
+        count, total = int(m.group(1)), int(m.group(2))
+        ints = _numbers(text, m.end(), total, numpy.int64)
+        cells, at = [], 0
+        for _ in range(count):
+            size = int(ints[at]) if at < total else -1
+            if size < 2 or at + 1 + size > total or (cell_type == VTK_TRIANGLE and size != 3):
+                _fail(path, "a cell has a bad size")
+            cells.append(ints[at + 1:at + 1 + size])
+            at += 1 + size
+        m = _header(text, r"^CELL_TYPES (\d+)\s", m.end())
+        if count and (_numbers(text, m.end(), count, numpy.int64) != cell_type).any():
+            _fail(path, "cells are not all of type %d" % cell_type)
+        data = {}
+        for name in arrays:
+            a = _header(text, r"^SCALARS %s \w+ 1\s+LOOKUP_TABLE \w+\s" % re.escape(name), m.end())
+            data[name] = _numbers(text, a.end(), count, float).astype(numpy.int64)
+    except ValueError as e:
+        _fail(path, "truncated or not a legacy VTK grid (%s)" % e)
+    if any(c.min() < 0 or c.max() >= n for c in cells):
+        _fail(path, "a cell names a point that does not exist")
+    if not numpy.isfinite(points).all():
+        _fail(path, "a point is not finite")
+    return dict(data, points=points, cells=cells)

@@ -16,6 +16,9 @@ import time
 # the unit cube's corners (bit 0: x, 1: y, 2: z) and its 6 Kuhn tets around the diagonal 0-7
 CUBE = [[i & 1, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)]
 KUHN = [[0, 1, 3, 7], [0, 3, 2, 7], [0, 2, 6, 7], [0, 6, 4, 7], [0, 4, 5, 7], [0, 5, 1, 7]]
+# The cube's 12 boundary triangles: the first 6 bound block 0, the last 6 block 1.
+CUBE_TRIANGLES = [[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4],
+                  [2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]]
 
 
 INFO = {
@@ -69,6 +72,21 @@ def write_blocks(report, out):
     lines += ["SCALARS block_valid double 1", "LOOKUP_TABLE default"]
     lines += [str(valid[b]) for b in tet_block]
     with open(os.path.join(out, "blocks.vtk"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    write_cells(os.path.join(out, "block_surfaces.vtk"), CUBE_TRIANGLES, 5, [0] * 6 + [1] * 6)
+    write_cells(os.path.join(out, "block_edges.vtk"), [[0, 1, 3], [4, 5, 7, 6]], 4, [0, 1])
+
+
+def write_cells(path, cells, cell_type, block):
+    """A legacy VTK grid of the cube's points with `cells` of one type and a block per cell."""
+    lines = ["# vtk DataFile Version 3.0", "canned", "ASCII", "DATASET UNSTRUCTURED_GRID",
+             "POINTS 8 double"] + ["%d %d %d" % tuple(p) for p in CUBE]
+    lines += ["CELLS %d %d" % (len(cells), sum(len(c) + 1 for c in cells))]
+    lines += [" ".join(str(i) for i in [len(c)] + c) for c in cells]
+    lines += ["CELL_TYPES %d" % len(cells)] + [str(cell_type)] * len(cells)
+    lines += ["CELL_DATA %d" % len(cells), "SCALARS block double 1", "LOOKUP_TABLE default"]
+    lines += [str(b) for b in block]
+    with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
 

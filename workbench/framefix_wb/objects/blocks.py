@@ -1,11 +1,12 @@
 """Blocks: the part cut into blocks (`framefix blocks`), as the run's tet mesh with the block
 of each tet. A Fem::FemMeshObjectPython: FemMesh holds the tets (element i + 1 is tet i),
-BlockIds their blocks, BlockValid the blocks' validity; the view provider colours the
-elements by block. The run (and its report) belongs to the curves object in Analysis; the
+BlockIds their blocks, BlockValid the blocks' validity, BlockColors their colours (chosen on
+the App side, so that a macro's blocks are coloured as the command's); the view provider colours
+the elements by block. Hidden by default: BlockSurfaces shows the blocks smoothed. The run (and its report) belongs to the curves object in Analysis; the
 tet mesh of a new run comes from runs.block_mesh() in the recompute after it, and is
 saved with the document (MeshDigest: the run it belongs to).
 """
-from .. import runs
+from .. import runs, style
 from ..errors import FrameFixError
 from ..report import blocks_text
 from .properties import HIDDEN, READ_ONLY, ProxyBase, add, report_of
@@ -42,6 +43,8 @@ class Blocks(ProxyBase):
             "per tet (FemMesh element i + 1): its block, -1 none", HIDDEN)
         add(obj, "App::PropertyIntegerList", "BlockValid", "FrameFix",
             "per block: 1 valid hexahedron, 0 not", HIDDEN)
+        add(obj, "App::PropertyColorList", "BlockColors", "FrameFix",
+            "per block: its colour (neighbours differ, invalid blocks red)", HIDDEN)
         add(obj, "App::PropertyString", "MeshDigest", "FrameFix",
             "InputDigest of the run FemMesh comes from", HIDDEN)
         for name, _, doc in SUMMARY_PROPERTIES:
@@ -67,6 +70,7 @@ class Blocks(ProxyBase):
         else:
             ids = list(obj.BlockIds)
         obj.BlockValid = [int(b["valid"]) for b in blocks["blocks"]]
+        obj.BlockColors = style.block_colors(blocks["blocks"])
         for name, key, _ in SUMMARY_PROPERTIES:
             setattr(obj, name, blocks[key])
         obj.Summary = blocks_text(blocks)

@@ -129,7 +129,7 @@ class AnalyzeForm(QtWidgets.QWidget):
                 blocks["conforming_pairs"] == blocks["pairs"])
             head = '<b style="color:%s">%s</b><br>%s<br>' % (
                 "#008000" if good else "#c00000", html.escape(blocks_text(blocks)),
-                style.blocks_legend_html(blocks["count"], [b["valid"] for b in blocks["blocks"]]))
+                style.blocks_legend_html(blocks["blocks"]))
         self.summary.setText(head +
             "%s: %s<b>%d 3-5 curves</b>, %d singular curves in all (%s), %d nodes (%d invalid)"
             "<br>%s<br>%s" % (

@@ -132,4 +132,7 @@ class ProcessRunner(QtCore.QObject):
         except BackendError as e:
             self.failed.emit(str(e))
             return
+        except Exception as e:  # a slot must not raise: Qt would drop it and the panel would wait
+            self.failed.emit("could not read the backend's results: %s: %s" % (type(e).__name__, e))
+            return
         self.succeeded.emit(report)

@@ -13,6 +13,7 @@ class ViewProviderBlocks(ViewProviderBase):
             vobj.DisplayMode = "Faces"  # "Faces & Wireframe" draws every tet edge: noise
         vobj.Transparency = style.BLOCKS_TRANSPARENCY
         vobj.ShapeColor = style.block_color(0, True)
+        vobj.Visibility = False  # BlockSurfaces shows the blocks without the staircase
 
     def updateData(self, obj, prop):
         if prop == "BlockIds":
@@ -20,9 +21,7 @@ class ViewProviderBlocks(ViewProviderBase):
 
     def colour(self, obj):
         ids = list(obj.BlockIds)
-        valid = list(obj.BlockValid)
-        colours = [style.block_color(b, 0 <= b < len(valid) and bool(valid[b]))
-                   for b in range(len(valid))]
+        colours = [tuple(c)[:3] for c in obj.BlockColors]
         none = style.block_color(-1, False)
         element_colors = {
             i + 1: colours[b] if 0 <= b < len(colours) else none for i, b in enumerate(ids)}
