@@ -33,16 +33,38 @@ def _header(text, pattern, start=0):
     return m
 
 
-def read_tets(path, arrays=("block",)):
-    """{"points": (n, 3) float array, "tets": (m, 4) int array, "<array>": m ints} of a legacy
-    ASCII UNSTRUCTURED_GRID of tets with integer CELL_DATA `arrays`."""
+def _read_text(path):
     try:
         with open(path, encoding="ascii") as f:
-            text = f.read()
+            return f.read()
     except FileNotFoundError:
         raise BackendError("the backend finished but wrote no %s" % path.rsplit("/", 1)[-1]) from None
     except (OSError, UnicodeDecodeError) as e:
         _fail(path, str(e))
+
+
+
+def _cell_arrays(text, start, names, count):
+    """The integer CELL_DATA arrays `names` (count values each) after offset `start`."""
+    data = {}
+    for name in names:
+        a = _header(text, r"^SCALARS %s \w+ 1\s+LOOKUP_TABLE \w+\s" % re.escape(name), start)
+        data[name] = _numbers(text, a.end(), count, float).astype(numpy.int64)
+    return data
+
+
+def _check_points(path, points, indices, what):
+    """Every index in `indices` names one of `points`, and the points are finite."""
+    if len(indices) and (min(indices) < 0 or max(indices) >= len(points)):
+        _fail(path, "a %s names a point that does not exist" % what)
+    if not numpy.isfinite(points).all():
+        _fail(path, "a point is not finite")
+
+
+def read_tets(path, arrays=("block",)):
+    """{"points": (n, 3) float array, "tets": (m, 4) int array, "<array>": m ints} of a legacy
+    ASCII UNSTRUCTURED_GRID of tets with integer CELL_DATA `arrays`."""
+    text = _read_text(path)
     try:
         m = _header(text, r"^POINTS (\d+) \w+\s")
         n = int(m.group(1))
@@ -57,28 +79,12 @@ def read_tets(path, arrays=("block",)):
         m = _header(text, r"^CELL_TYPES (\d+)\s", m.end())
         if cells and (_numbers(text, m.end(), cells, numpy.int64) != VTK_TETRA).any():
             _fail(path, "cell types are not all tets")
-        data = {}
-        for name in arrays:
-            a = _header(text, r"^SCALARS %s \w+ 1\s+LOOKUP_TABLE \w+\s" % re.escape(name), m.end())
-            data[name] = _numbers(text, a.end(), cells, float).astype(numpy.int64)
+        data = _cell_arrays(text, m.end(), arrays, cells)
     except ValueError as e:
         _fail(path, "truncated or not a legacy VTK tet mesh (%s)" % e)
     tets = ints[:, 1:]
-    if cells and (tets.min() < 0 or tets.max() >= n):
-        _fail(path, "a tet names a point that does not exist")
-    if not numpy.isfinite(points).all():
-        _fail(path, "a point is not finite")
+    _check_points(path, points, [tets.min(), tets.max()] if cells else [], "tet")
     return dict(data, points=points, tets=tets)
-
-
-def _read_text(path):
-    try:
-        with open(path, encoding="ascii") as f:
-            return f.read()
-    except FileNotFoundError:
-        raise BackendError("the backend finished but wrote no %s" % path.rsplit("/", 1)[-1]) from None
-    except (OSError, UnicodeDecodeError) as e:
-        _fail(path, str(e))
 
 
 def read_cells(path, cell_type, arrays=()):
@@ -103,14 +109,8 @@ def read_cells(path, cell_type, arrays=()):
         m = _header(text, r"^CELL_TYPES (\d+)\s", m.end())
         if count and (_numbers(text, m.end(), count, numpy.int64) != cell_type).any():
             _fail(path, "cells are not all of type %d" % cell_type)
-        data = {}
-        for name in arrays:
-            a = _header(text, r"^SCALARS %s \w+ 1\s+LOOKUP_TABLE \w+\s" % re.escape(name), m.end())
-            data[name] = _numbers(text, a.end(), count, float).astype(numpy.int64)
+        data = _cell_arrays(text, m.end(), arrays, count)
     except ValueError as e:
         _fail(path, "truncated or not a legacy VTK grid (%s)" % e)
-    if any(c.min() < 0 or c.max() >= n for c in cells):
-        _fail(path, "a cell names a point that does not exist")
-    if not numpy.isfinite(points).all():
-        _fail(path, "a point is not finite")
+    _check_points(path, points, [int(i) for c in cells for i in (c.min(), c.max())], "cell")
     return dict(data, points=points, cells=cells)
