@@ -25,6 +25,8 @@ struct Args {
     double budget_s = 0;
     bool quiet = false;
     bool fillet_rims = false;
+    double hex_size = 0;
+    int layers = 0, order = 1;
     std::string method = framefix::correction_methods()[0].name;
 };
 
@@ -54,6 +56,9 @@ framefix::RunOptions options_from(const Args& a, framefix::Stage stop_after) {
     o.correction = a.method;
     o.budget_s = a.budget_s;
     o.fillet.rims = a.fillet_rims;
+    o.hexmesh.size = a.hex_size;
+    o.hexmesh.layers = a.layers;
+    o.hexmesh.order = a.order;
     o.mesh.size = a.size;
     o.size_factor = a.size_factor;
     o.threads = a.threads;
@@ -100,6 +105,7 @@ int main(int argc, char** argv) {
         {"analyze", "mesh, frame field, singular curves, 3-5 curves", Stage::singularities},
         {"correct", "analyze, then correct the 3-5 curves and analyze again", Stage::correction},
         {"blocks", "analyze, correct, then cut the part into blocks", Stage::blocks},
+        {"hexmesh", "analyze, correct, cut into blocks, then mesh the blocks with hexahedra", Stage::hexmesh},
     };
     for (auto& c : commands) {
         c.app = app.add_subcommand(c.name, c.help);
@@ -107,10 +113,16 @@ int main(int argc, char** argv) {
     }
     commands[2].app->add_option("--method", a.method, method_help(false));
     commands[3].app->add_option("--method", a.method, "correction before the blocks: " + method_help(true));
-    for (int k : {2, 3})
+    commands[4].app->add_option("--method", a.method, "correction before the blocks: " + method_help(true));
+    commands[4].app->add_option("--hex-size", a.hex_size, "target hex edge length in model units (default: 2 tet edges)")
+        ->check(CLI::PositiveNumber);
+    commands[4].app->add_option("--layers", a.layers, "hexes along the shortest block edge (overrides --hex-size)")
+        ->check(CLI::PositiveNumber);
+    commands[4].app->add_option("--order", a.order, "1: 8-node hexes (C3D8), 2: 20-node (C3D20)")->check(CLI::Range(1, 2));
+    for (int k : {2, 3, 4})
         commands[k].app->add_option("--budget-s", a.budget_s, "method auto: seconds for its tries (default: 120 per 50k tets)")
             ->check(CLI::PositiveNumber);
-    for (int k : {2, 3})
+    for (int k : {2, 3, 4})
         commands[k].app->add_flag("--fillet-rims", a.fillet_rims,
                                   "method fillet: also fillet the rims across the wall from each concave edge");
     auto* info = app.add_subcommand("info", "print the defaults and the correction methods as JSON");

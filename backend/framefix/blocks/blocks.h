@@ -72,6 +72,23 @@ struct BlockPair {                 // two blocks that share boundary
     std::string reason;            // why not
 };
 
+// One triangle of a block's boundary surface.
+struct BoundaryTriangle {
+    Eigen::Vector3i verts;         // mesh vertex ids
+    int label = 0;                 // neighbouring block id (>= 0) or -1 - CAD surface group
+    Eigen::Vector3d normal;        // outward from the block, area-weighted (|n| = 2 area)
+};
+
+struct BlockFaces {                // the cleaned patches of one block, for the conformity check
+    std::vector<int> label;        // per patch: neighbouring block id, or -1 - CAD surface group
+    std::vector<std::vector<Eigen::Vector3d>> corners;  // per patch: positions of its corners
+    std::vector<int> cleaned;      // per input triangle: the label of its patch after cleaning
+    std::vector<int> patch;        // per input triangle: its patch (index into label)
+    std::vector<std::vector<int>> corner_vertices;  // per corner: the mesh vertices of its cluster
+    std::vector<std::vector<int>> corner_patches;   // per corner: its patches, ascending
+    std::vector<Eigen::Vector3d> corner_position;   // per corner: mean of its cluster, model units
+};
+
 struct BlockSurfaces {            // smoothed for display (docs/algorithms.md#block-surfaces)
     Points points;                 // smoothed positions, model units
     Triangles triangles;           // each block's boundary triangles, outward; an interface twice
@@ -105,6 +122,10 @@ struct BlockDecomposition {
     int flat_corners = 0, flat_edges = 0;    // summed over blocks (a shared edge counts in each block)
     SheetSoup sheets;
     BlockSurfaces surfaces;        // smoothed block boundaries and edges, for display
+    // Per block: its boundary triangles and their cleaned faces and corners (what the hex mesh
+    // is built from).
+    std::vector<std::vector<BoundaryTriangle>> boundary;
+    std::vector<BlockFaces> faces;
     SheetStats stats;
     // Imprinted curves (B-rep edge ids, ascending) the field does not follow: they emit no sheet
     // and block faces run across them (the hex mesh will not follow them either).

@@ -200,6 +200,8 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     for (const BlockPair& p : out.neighbour_pairs) out.conforming_pairs += p.conforming;
     out.seconds_validation = since(t2);
     out.surfaces = block_surfaces(mesh, v.surface, v.faces);
+    out.boundary = std::move(v.surface);
+    out.faces = std::move(v.faces);
     out.seconds = since(t0);
     return out;
 }

@@ -293,6 +293,10 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
             for (int p : corner_patches[c]) out.corners[p].push_back(corner_pos[c]);
         out.cleaned.resize(nf);
         for (int i = 0; i < nf; ++i) out.cleaned[i] = out.label[patch[i]];
+        out.patch = patch;
+        out.corner_vertices = clusters;
+        for (const auto& ps : corner_patches) out.corner_patches.emplace_back(ps.begin(), ps.end());
+        out.corner_position = corner_pos;
     }
 
     const std::pair<bool, std::string> tests[] = {

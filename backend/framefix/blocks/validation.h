@@ -9,19 +9,6 @@
 
 namespace framefix {
 
-// One triangle of a block's boundary surface.
-struct BoundaryTriangle {
-    Eigen::Vector3i verts;         // mesh vertex ids
-    int label = 0;                 // neighbouring block id (>= 0) or -1 - CAD surface group
-    Eigen::Vector3d normal;        // outward from the block, area-weighted (|n| = 2 area)
-};
-
-struct BlockFaces {                // the cleaned patches of one block, for the conformity check
-    std::vector<int> label;        // per patch: neighbouring block id, or -1 - CAD surface group
-    std::vector<std::vector<Eigen::Vector3d>> corners;  // per patch: positions of its corners
-    std::vector<int> cleaned;      // per input triangle: the label of its patch after cleaning
-};
-
 // Counts faces/edges/corners of one block's boundary, with `h` the unit of the options. Fills
 // everything in `info` except tets, volume, neighbours and centroid.
 BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangle>& surface, double h,

@@ -49,6 +49,8 @@ double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d&
 // half a square's side (a face's inradius when it is a tangential polygon).
 double face_width(const BrepModel& model, int face);
 Eigen::Vector3d closest_point_on_edge(const BrepModel& model, int edge, const Eigen::Vector3d& p);
+// The point of Face<face>'s surface closest to p, for p within about a mesh size of the face.
+Eigen::Vector3d closest_point_on_face(const BrepModel& model, int face, const Eigen::Vector3d& p);
 
 // Size h for about `target_tets` near-uniform tets in this solid.
 double default_size(const BrepModel& model, int target_tets = kDefaultTargetTets);

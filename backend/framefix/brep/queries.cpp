@@ -4,6 +4,7 @@
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
+#include <ShapeAnalysis_Surface.hxx>
 #include <GProp_GProps.hxx>
 #include <TopoDS.hxx>
 
@@ -75,6 +76,18 @@ double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d&
         throw Error("brep", "Face" + std::to_string(face) + " does not exist; the model has " +
                                 std::to_string(model.num_faces) + " faces");
     return distance_to(model.shape->faces(face), p);
+}
+
+Eigen::Vector3d closest_point_on_face(const BrepModel& model, int face, const Eigen::Vector3d& p) {
+    FF_ASSERT(model.shape && face >= 1 && face <= model.num_faces);
+    return occt_call("brep", "projecting onto Face" + std::to_string(face), [&] {
+        // The face's untrimmed surface: the points projected lie on the face already (within a
+        // mesh size), so its trim does not matter, and it is much cheaper than BRepExtrema.
+        ShapeAnalysis_Surface surface(BRep_Tool::Surface(TopoDS::Face(model.shape->faces(face))));
+        const gp_Pnt q(p.x(), p.y(), p.z());
+        const gp_Pnt r = surface.Value(surface.ValueOfUV(q, Precision::Confusion()));
+        return Eigen::Vector3d(r.X(), r.Y(), r.Z());
+    });
 }
 
 double face_width(const BrepModel& model, int face) {

@@ -2,6 +2,7 @@
 #include <fstream>
 
 #include "framefix/core/error.h"
+#include "framefix/hexmesh/hex_files.h"
 #include "framefix/mesh/vtk_writer.h"
 #include "framefix/pipeline/report.h"
 
@@ -230,6 +231,12 @@ std::vector<std::string> write_outputs(const RunResult& r, const std::string& di
         write_vtk(block_surfaces_grid(*blocks), path("block_surfaces.vtk"), "FrameFix block boundaries, smoothed for display");
         write_vtk(block_edges_grid(blocks->surfaces), path("block_edges.vtk"), "FrameFix block edges, smoothed for display");
         for (const char* name : {"blocks.vtk", "sheets.vtk", "block_surfaces.vtk", "block_edges.vtk"}) written.push_back(path(name));
+    }
+    if (r.hexmesh && r.hexmesh->done) {
+        write_hex_vtk(*r.hexmesh, path("hex.vtk"));
+        write_hex_msh(*r.hexmesh, path("hex.msh"));
+        write_hex_inp(*r.hexmesh, path("hex.inp"));
+        for (const char* name : {"hex.vtk", "hex.msh", "hex.inp"}) written.push_back(path(name));
     }
     std::ofstream out(path("report.json"));
     out << report_json(r) << '\n';

@@ -24,6 +24,10 @@ bool is_tet_mesh(const std::string& kind) { return kind == "msh" || kind == "mes
 // Throws before any work when the run would reach an unknown or unavailable correction.
 void check_options(const RunOptions& o) {
     if (o.stop_after >= Stage::correction && o.correction != kNoCorrection) find_correction_method(o.correction);
+    if (o.hexmesh.order != 1 && o.hexmesh.order != 2)
+        throw Error("hexmesh", "order " + std::to_string(o.hexmesh.order) + " is not offered; use 1 (8-node hexes) or 2 (20-node)");
+    if (o.hexmesh.size < 0 || o.hexmesh.layers < 0)
+        throw Error("hexmesh", "the hex size and the layer count must not be negative");
 }
 
 // load: the B-rep of a CAD file (or the given model), or the tets of a mesh file.
@@ -77,6 +81,23 @@ BlockDecomposition blocks(const RunResult& r, const RunOptions& o) {
     return b;
 }
 
+// Boundary vertices go onto the solid the tets were made from: the filleted one after a fillet
+// correction, none for a tet-mesh input.
+HexMesh hexmesh(const RunResult& r, const RunOptions& o) {
+    report(o.progress, "hexmesh", 0.0);
+    const BrepModel* model = r.correction && r.correction->filleted ? r.correction->filleted.get() : r.model.get();
+    CadProjector cad;
+    if (model) {
+        cad.to_face = [model](int face, const Eigen::Vector3d& p) { return closest_point_on_face(*model, face, p); };
+        cad.to_edge = [model](int edge, const Eigen::Vector3d& p) { return closest_point_on_edge(*model, edge, p); };
+    }
+    HexMesh h = build_hexmesh(r.mesh->tets, *r.blocks, o.hexmesh, cad);
+    if (model) h.part_volume = model->volume;
+    else for (int t = 0; t < r.mesh->tets.num_tets(); ++t) h.part_volume += tet_volume(r.mesh->tets, t);
+    report(o.progress, "hexmesh", 1.0);
+    return h;
+}
+
 // Times one stage into `seconds` and the run's total.
 template <class F>
 void timed(double& seconds, Timings& t, F&& stage) {
@@ -96,6 +117,7 @@ const char* stage_name(Stage stage) {
         case Stage::singularities: return "singularities";
         case Stage::correction: return "correct";
         case Stage::blocks: return "blocks";
+        case Stage::hexmesh: return "hexmesh";
     }
     return "?";
 }
@@ -146,7 +168,9 @@ RunResult run(const RunInput& input, const RunOptions& o) {
         timed(t.correct, t, [&] { r.correction = detail::correct(*r.mesh, *r.field, *r.singularities, o, r.model.get()); });
     if (done(Stage::correction)) return r;
     timed(t.blocks, t, [&] { r.blocks = blocks(r, o); });
-    done(Stage::blocks);
+    if (done(Stage::blocks)) return r;
+    timed(t.hexmesh, t, [&] { r.hexmesh = hexmesh(r, o); });
+    done(Stage::hexmesh);
     return r;
 }
 

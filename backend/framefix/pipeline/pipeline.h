@@ -1,6 +1,6 @@
 #pragma once
 // The only module that knows the order of the stages: load, mesh, field, singularities,
-// correction, blocks. A run returns every stage's output it reached, so that viewers, the
+// correction, blocks, hexmesh. A run returns every stage's output it reached, so that viewers, the
 // report and the tests can look at each.
 #include <memory>
 #include <optional>
@@ -8,6 +8,7 @@
 
 #include "framefix/blocks/blocks.h"
 #include "framefix/brep/brep_model.h"
+#include "framefix/hexmesh/hexmesh.h"
 #include "framefix/pipeline/run_options.h"
 #include "framefix/pipeline/stages.h"
 
@@ -31,6 +32,7 @@ struct RunResult {
     std::optional<SingularityGraph> singularities;  // the corrected graph after a correction
     std::optional<Correction> correction;     // absent when the run had none
     std::optional<BlockDecomposition> blocks;
+    std::optional<HexMesh> hexmesh;          // done = false with the reason when the blocks cannot be meshed
     Timings timings;
     double peak_memory_mb = 0;
 };

@@ -177,6 +177,31 @@ json blocks_json(const BlockDecomposition& b) {
                          {"validation", b.seconds_validation}, {"total", b.seconds}}}};
 }
 
+json hexmesh_json(const HexMesh& h) {
+    if (!h.done) return {{"done", false}, {"reason", h.reason}, {"part_volume", h.part_volume}, {"seconds", h.seconds}};
+    json blocks = json::array();
+    for (size_t b = 0; b < h.blocks.size(); ++b)
+        blocks.push_back({{"counts", h.blocks[b].counts}, {"hexes", h.blocks[b].hexes},
+                          {"min_scaled_jacobian", h.blocks[b].min_scaled_jacobian}});
+    const HexQuality& q = h.quality;
+    return {{"done", true},
+            {"hexes", h.hexes.size()},
+            {"vertices", h.points.rows()},
+            {"order", h.midpoints.empty() ? 1 : 2},
+            {"size", h.size},
+            {"edge_classes", h.edge_classes},
+            {"min_scaled_jacobian", q.min_scaled_jacobian},
+            {"mean_scaled_jacobian", q.mean_scaled_jacobian},
+            {"share_sj_ge_0_5", q.share_sj_ge_0_5},
+            {"inverted", q.inverted},
+            {"volume", q.volume},
+            {"part_volume", h.part_volume},
+            {"boundary_quads", h.boundary_quads.size()},
+            {"blocks", blocks},
+            {"seconds", h.seconds},
+            {"hexes_per_second", h.seconds > 0 ? double(h.hexes.size()) / h.seconds : 0.0}};
+}
+
 json timings_json(const RunResult& r) {
     json t = {{"load", r.timings.load}, {"total", r.timings.total}};
     if (r.mesh) t["mesh"] = r.timings.mesh;
@@ -184,6 +209,7 @@ json timings_json(const RunResult& r) {
     if (r.singularities) t["singularities"] = r.timings.singularities;
     if (r.correction) t["correct"] = r.timings.correct;
     if (r.blocks) t["blocks"] = r.timings.blocks;
+    if (r.hexmesh) t["hexmesh"] = r.timings.hexmesh;
     return t;
 }
 
@@ -217,6 +243,7 @@ std::string report_json(const RunResult& r) {
     if (r.singularities) j["singularities"] = singularities_json(*r.singularities);
     if (r.correction) j["correction"] = correction_json(*r.correction, r.singularities->summary);
     if (r.blocks) j["blocks"] = blocks_json(*r.blocks);
+    if (r.hexmesh) j["hexmesh"] = hexmesh_json(*r.hexmesh);
     j["timings_s"] = timings_json(r);
     j["peak_memory_mb"] = r.peak_memory_mb;
     return j.dump(1);

@@ -5,6 +5,7 @@
 #include "framefix/blocks/blocks.h"
 #include "framefix/brep/brep_model.h"
 #include "framefix/core/progress.h"
+#include "framefix/hexmesh/hexmesh.h"
 #include "framefix/corrections/snapping.h"
 #include "framefix/pipeline/fillet_plan.h"
 #include "framefix/pipeline/stages.h"
@@ -25,6 +26,7 @@ struct RunOptions {
     SnapOptions snap;
     FilletPlanOptions fillet;
     BlockOptions blocks;
+    HexMeshOptions hexmesh;
     double size_factor = 1;  // multiplies the default size when mesh.size == 0
     int threads = 0;         // OpenMP threads of this run's parallel loops, 0 = all cores
     ProgressSink progress;   // fractions per stage, stages in run order

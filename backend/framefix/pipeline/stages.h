@@ -19,9 +19,9 @@
 namespace framefix {
 
 // In run order; a run stops after the stage RunOptions::stop_after names.
-enum class Stage { load, mesh, field, singularities, correction, blocks };
+enum class Stage { load, mesh, field, singularities, correction, blocks, hexmesh };
 
-// The stage's name in progress lines and errors: load, mesh, field, singularities, correct, blocks.
+// The stage's name in progress lines and errors: load, mesh, field, singularities, correct, blocks, hexmesh.
 const char* stage_name(Stage stage);
 
 struct MeshStage {              // feature curves and the tet mesh that carries them
@@ -99,7 +99,7 @@ struct Correction {
 };
 
 struct Timings {  // seconds
-    double load = 0, mesh = 0, field = 0, singularities = 0, correct = 0, blocks = 0, total = 0;
+    double load = 0, mesh = 0, field = 0, singularities = 0, correct = 0, blocks = 0, hexmesh = 0, total = 0;
 };
 
 }  // namespace framefix

@@ -51,6 +51,12 @@ std::string human_summary(const RunResult& r) {
              ", " + std::to_string(blocks->conforming_pairs) + "/" + std::to_string(blocks->pairs) + " pairs conforming";
         if (blocks->flat_edges) s += ", " + std::to_string(blocks->flat_edges) + " flat edge" + (blocks->flat_edges == 1 ? "" : "s");
     }
+    if (const auto& hex = r.hexmesh) {
+        char q[96];
+        std::snprintf(q, sizeof q, "; %zu hexes, min scaled Jacobian %.2f, %d inverted", hex->hexes.size(),
+                      hex->quality.min_scaled_jacobian, hex->quality.inverted);
+        s += hex->done ? std::string(q) : "; no hex mesh: " + hex->reason;
+    }
     if (r.mesh && r.mesh->attempts.size() > 1)
         s += "; meshed on try " + std::to_string(r.mesh->attempts.size()) + " (" + r.mesh->attempts.back().how +
              ") after: " + r.mesh->attempts.front().failure;

@@ -1,0 +1,298 @@
+#include "framefix/hexmesh/block_structure.h"
+
+#include <algorithm>
+#include <map>
+#include <queue>
+#include <unordered_map>
+
+#include <Eigen/Geometry>
+
+#include "framefix/core/disjoint_set.h"
+#include "framefix/mesh/keys.h"
+
+namespace framefix {
+
+namespace {
+
+std::string first_failure(const BlockDecomposition& d) {
+    for (int b = 0; b < d.count; ++b)
+        if (!d.blocks[b].valid) return "block " + std::to_string(b) + " is not a hexahedron (" + d.blocks[b].reason + ")";
+    for (const BlockPair& p : d.neighbour_pairs)
+        if (!p.conforming)
+            return "blocks " + std::to_string(p.a) + " and " + std::to_string(p.b) + " do not share one whole face (" + p.reason + ")";
+    if (int(d.faces.size()) != d.count || int(d.boundary.size()) != d.count) return "the decomposition carries no block faces";
+    return "";
+}
+
+std::vector<int> corners_of_patch(const BlockFaces& f, int patch) {
+    std::vector<int> out;
+    for (int c = 0; c < int(f.corner_patches.size()); ++c)
+        if (std::binary_search(f.corner_patches[c].begin(), f.corner_patches[c].end(), patch)) out.push_back(c);
+    return out;
+}
+
+// Global corner of every (block, corner): corners sharing a mesh vertex, and the corners of a
+// shared face matched nearest to nearest, are one. Returns per block its corners' global ids.
+std::vector<std::vector<int>> merge_corners(const TetMesh& mesh, const BlockDecomposition& d, BlockComplex& cx) {
+    std::vector<int> offset(d.count + 1, 0);
+    for (int b = 0; b < d.count; ++b) offset[b + 1] = offset[b] + int(d.faces[b].corner_vertices.size());
+    DisjointSet sets(offset.back());
+    std::unordered_map<int, int> node_of_vertex;
+    for (int b = 0; b < d.count; ++b)
+        for (int c = 0; c < int(d.faces[b].corner_vertices.size()); ++c)
+            for (int v : d.faces[b].corner_vertices[c]) {
+                auto [it, fresh] = node_of_vertex.try_emplace(v, offset[b] + c);
+                if (!fresh) sets.unite(it->second, offset[b] + c);
+            }
+    for (const BlockPair& p : d.neighbour_pairs) {
+        const BlockFaces &fa = d.faces[p.a], &fb = d.faces[p.b];
+        const auto pa = std::find(fa.label.begin(), fa.label.end(), p.b) - fa.label.begin();
+        const auto pb = std::find(fb.label.begin(), fb.label.end(), p.a) - fb.label.begin();
+        const std::vector<int> ca = corners_of_patch(fa, int(pa)), cb = corners_of_patch(fb, int(pb));
+        for (int x : ca) {
+            int best = -1;
+            for (int y : cb)
+                if (best < 0 || (fa.corner_position[x] - fb.corner_position[y]).norm() <
+                                    (fa.corner_position[x] - fb.corner_position[best]).norm())
+                    best = y;
+            if (best >= 0) sets.unite(offset[p.a] + x, offset[p.b] + best);
+        }
+    }
+    std::map<int, int> id_of_root;
+    std::vector<std::vector<int>> global(d.count);
+    std::vector<int> members;
+    for (int b = 0; b < d.count; ++b)
+        for (int c = 0; c < int(d.faces[b].corner_vertices.size()); ++c) {
+            const int root = sets.find(offset[b] + c);
+            auto [it, fresh] = id_of_root.try_emplace(root, int(cx.corners.size()));
+            if (fresh) cx.corners.emplace_back(), members.push_back(0);
+            ComplexCorner& corner = cx.corners[it->second];
+            corner.position += d.faces[b].corner_position[c];
+            members[it->second] += 1;
+            corner.vertices.insert(corner.vertices.end(), d.faces[b].corner_vertices[c].begin(), d.faces[b].corner_vertices[c].end());
+            global[b].push_back(it->second);
+        }
+    std::vector<char> brep_vertex(mesh.num_vertices(), 0);
+    for (int i = 0; i < int(mesh.corner_vertices.size()); ++i) brep_vertex[mesh.corner_vertices[i]] = 1;
+    for (size_t c = 0; c < cx.corners.size(); ++c) {
+        ComplexCorner& corner = cx.corners[c];
+        corner.position /= double(members[c]);
+        std::sort(corner.vertices.begin(), corner.vertices.end());
+        corner.vertices.erase(std::unique(corner.vertices.begin(), corner.vertices.end()), corner.vertices.end());
+        for (int v : corner.vertices)
+            if (brep_vertex[v]) corner.position = mesh.points.row(v).transpose();  // a CAD vertex stays exact
+    }
+    return global;
+}
+
+// The block's corners as a cube: corner (0,0,0) is its lowest global corner, the three faces
+// there start the three axes, each axis ends at the face sharing no corner with its start.
+// Returns the local corner -> block corner map and the axis faces (patches), or false.
+bool cube_frame(const BlockFaces& f, const std::vector<int>& global, std::array<int, 8>& corner,
+                std::array<std::array<int, 2>, 3>& axis) {
+    if (f.corner_patches.size() != 8 || f.label.size() != 6) return false;
+    const int c0 = int(std::min_element(global.begin(), global.end()) - global.begin());
+    for (int a = 0; a < 3; ++a) {
+        const int start = f.corner_patches[c0][a];
+        int opposite = -1;
+        for (int p = 0; p < 6; ++p) {
+            bool shares = p == start;
+            for (const auto& ps : f.corner_patches)
+                shares |= std::binary_search(ps.begin(), ps.end(), p) && std::binary_search(ps.begin(), ps.end(), start);
+            if (!shares) {
+                if (opposite >= 0) return false;
+                opposite = p;
+            }
+        }
+        if (opposite < 0) return false;
+        axis[a] = {start, opposite};
+    }
+    auto fill = [&] {
+        for (int i = 0; i < 8; ++i) {
+            std::vector<int> want{axis[0][i & 1], axis[1][(i >> 1) & 1], axis[2][(i >> 2) & 1]};
+            std::sort(want.begin(), want.end());
+            corner[i] = -1;
+            for (int c = 0; c < 8; ++c)
+                if (f.corner_patches[c] == want) corner[i] = c;
+            if (corner[i] < 0) return false;
+        }
+        return true;
+    };
+    if (!fill()) return false;
+    const Eigen::Vector3d p0 = f.corner_position[corner[0]];
+    const double det = (f.corner_position[corner[1]] - p0).dot((f.corner_position[corner[2]] - p0).cross(f.corner_position[corner[4]] - p0));
+    if (det < 0) {
+        std::swap(axis[1], axis[2]);
+        return fill();
+    }
+    return true;
+}
+
+// Mesh vertices along the chain of mesh edges between patches p and q of block `f`, from corner
+// ca's cluster to corner cb's (shortest path over those edges).
+std::vector<int> edge_chain(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, const BlockFaces& f, int p, int q,
+                            int ca, int cb) {
+    const std::uint64_t nv = mesh.num_vertices();
+    std::unordered_map<PairKey, std::pair<bool, bool>> sides;  // mesh edge -> (in p, in q)
+    for (size_t t = 0; t < S.size(); ++t) {
+        if (f.patch[t] != p && f.patch[t] != q) continue;
+        for (int k = 0; k < 3; ++k) {
+            auto& s = sides[edge_key(S[t].verts[k], S[t].verts[(k + 1) % 3], nv)];
+            (f.patch[t] == p ? s.first : s.second) = true;
+        }
+    }
+    std::unordered_map<int, std::vector<int>> nb;
+    for (const auto& [key, s] : sides)
+        if (s.first && s.second) {
+            const auto [a, b] = key_ids(key, nv);
+            nb[a].push_back(b), nb[b].push_back(a);
+        }
+    if (nb.empty()) return {};
+    auto nearest = [&](const Eigen::Vector3d& x) {
+        int best = -1;
+        for (const auto& [v, w] : nb)
+            if (best < 0 || (mesh.points.row(v).transpose() - x).squaredNorm() < (mesh.points.row(best).transpose() - x).squaredNorm() ||
+                ((mesh.points.row(v).transpose() - x).squaredNorm() == (mesh.points.row(best).transpose() - x).squaredNorm() && v < best))
+                best = v;
+        return best;
+    };
+    const int source = nearest(f.corner_position[ca]), target = nearest(f.corner_position[cb]);
+    std::unordered_map<int, double> dist{{source, 0}};
+    std::unordered_map<int, int> from;
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+    open.push({0, source});
+    while (!open.empty()) {
+        const auto [d, v] = open.top();
+        open.pop();
+        if (d > dist[v] || v == target) continue;
+        for (int w : nb[v]) {
+            const double dw = d + (mesh.points.row(v) - mesh.points.row(w)).norm();
+            auto it = dist.find(w);
+            if (it == dist.end() || dw < it->second) dist[w] = dw, from[w] = v, open.push({dw, w});
+        }
+    }
+    if (!dist.count(target)) return {};
+    std::vector<int> chain{target};
+    while (chain.back() != source) chain.push_back(from[chain.back()]);
+    std::reverse(chain.begin(), chain.end());
+    return chain;
+}
+
+Points edge_polyline(const TetMesh& mesh, const BlockComplex& cx, int a, int b, const std::vector<int>& chain) {
+    std::vector<Eigen::Vector3d> pts{cx.corners[a].position};
+    auto in = [&](int c, int v) { return std::binary_search(cx.corners[c].vertices.begin(), cx.corners[c].vertices.end(), v); };
+    for (int v : chain)
+        if (!in(a, v) && !in(b, v)) pts.push_back(mesh.points.row(v).transpose());
+    pts.push_back(cx.corners[b].position);
+    Points out(Eigen::Index(pts.size()), 3);
+    for (size_t i = 0; i < pts.size(); ++i) out.row(Eigen::Index(i)) = pts[i].transpose();
+    return out;
+}
+
+// Local corners of local face `lf` (i = 0, i = 1, j = 0, ...) in cyclic order.
+std::array<int, 4> face_local_corners(int lf) {
+    const int axis = lf / 2, side = lf % 2;
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    std::array<int, 4> out{};
+    const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int n = 0; n < 4; ++n) {
+        int ijk[3];
+        ijk[axis] = side, ijk[u] = uv[n][0], ijk[v] = uv[n][1];
+        out[n] = local_corner(ijk[0], ijk[1], ijk[2]);
+    }
+    return out;
+}
+
+}  // namespace
+
+BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& d) {
+    BlockComplex cx;
+    cx.failure = first_failure(d);
+    if (!cx.failure.empty()) return cx;
+    const std::vector<std::vector<int>> global = merge_corners(mesh, d, cx);
+    std::map<std::pair<int, int>, int> edge_of, face_of_pair;
+    for (int b = 0; b < d.count; ++b) {
+        const BlockFaces& f = d.faces[b];
+        std::array<int, 8> corner{};
+        std::array<std::array<int, 2>, 3> axis{};
+        if (!cube_frame(f, global[b], corner, axis)) {
+            cx.failure = "block " + std::to_string(b) + "'s faces and corners do not form a cube";
+            return cx;
+        }
+        ComplexBlock blk;
+        blk.id = b;
+        for (int i = 0; i < 8; ++i) blk.corners[i] = global[b][corner[i]];
+        for (int i = 0; i < 8; ++i)
+            for (int k = i + 1; k < 8; ++k)
+                if (blk.corners[i] == blk.corners[k]) {
+                    cx.failure = "block " + std::to_string(b) + " meets itself at a corner";
+                    return cx;
+                }
+        for (int e = 0; e < 12; ++e) {
+            const int dir = e / 4, r = e % 4;           // r = the other two indices, lowest axis first
+            const int o1 = (dir + 1) % 3, o2 = (dir + 2) % 3;
+            const int lo = std::min(o1, o2), hi = std::max(o1, o2);
+            int ijk0[3], ijk1[3];
+            ijk0[dir] = 0, ijk1[dir] = 1;
+            ijk0[lo] = ijk1[lo] = r & 1, ijk0[hi] = ijk1[hi] = r >> 1;
+            const int l0 = local_corner(ijk0[0], ijk0[1], ijk0[2]), l1 = local_corner(ijk1[0], ijk1[1], ijk1[2]);
+            const int ga = blk.corners[l0], gb = blk.corners[l1];
+            const auto key = std::minmax(ga, gb);
+            auto [it, fresh] = edge_of.try_emplace({key.first, key.second}, int(cx.edges.size()));
+            if (fresh) {
+                ComplexEdge edge;
+                edge.a = key.first, edge.b = key.second;
+                const bool forward = ga == edge.a;
+                edge.chain = edge_chain(mesh, d.boundary[b], f, axis[lo][r & 1], axis[hi][r >> 1], forward ? corner[l0] : corner[l1],
+                                        forward ? corner[l1] : corner[l0]);
+                if (edge.chain.empty()) {
+                    cx.failure = "block " + std::to_string(b) + " has an edge with no mesh edges along it";
+                    return cx;
+                }
+                edge.polyline = edge_polyline(mesh, cx, edge.a, edge.b, edge.chain);
+                cx.edges.push_back(std::move(edge));
+            }
+            blk.edges[e] = it->second;
+        }
+        for (int lf = 0; lf < 6; ++lf) {
+            const int patch = axis[lf / 2][lf % 2];
+            const int across = f.label[patch];
+            std::array<int, 4> corners{};
+            const std::array<int, 4> local = face_local_corners(lf);
+            for (int n = 0; n < 4; ++n) corners[n] = blk.corners[local[n]];
+            int id = int(cx.faces.size());
+            if (across >= 0) {
+                auto [it, fresh] = face_of_pair.try_emplace(std::minmax(b, across), id);
+                id = it->second;
+                if (!fresh) {
+                    std::array<int, 4> mine = corners, theirs = cx.faces[id].corners;
+                    std::sort(mine.begin(), mine.end()), std::sort(theirs.begin(), theirs.end());
+                    if (mine != theirs) {
+                        cx.failure = "blocks " + std::to_string(b) + " and " + std::to_string(across) + " see their shared face with different corners";
+                        return cx;
+                    }
+                }
+            }
+            if (id == int(cx.faces.size())) {
+                ComplexFace face;
+                face.corners = corners;
+                face.boundary = across < 0;
+                for (size_t t = 0; t < d.boundary[b].size(); ++t) {
+                    if (f.patch[t] != patch) continue;
+                    Eigen::Vector3i v = d.boundary[b][t].verts;  // turned outward from block b
+                    const Eigen::Vector3d p0 = mesh.points.row(v[0]).transpose();
+                    const Eigen::Vector3d n = (mesh.points.row(v[1]).transpose() - p0).cross(mesh.points.row(v[2]).transpose() - p0);
+                    if (n.dot(d.boundary[b][t].normal) < 0) std::swap(v[1], v[2]);
+                    face.triangles.push_back(v);
+                }
+                cx.faces.push_back(std::move(face));
+            }
+            blk.faces[lf] = id;
+        }
+        cx.blocks.push_back(blk);
+    }
+    return cx;
+}
+
+}  // namespace framefix

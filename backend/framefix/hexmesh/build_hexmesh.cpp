@@ -1,0 +1,156 @@
+#include <algorithm>
+#include <chrono>
+#include <unordered_map>
+
+#include <Eigen/Geometry>
+
+#include "framefix/core/error.h"
+#include "framefix/hexmesh/hex_grid.h"
+#include "framefix/hexmesh/hex_projection.h"
+#include "framefix/mesh/keys.h"
+
+namespace framefix {
+
+namespace {
+
+// C3D20's edges after its 8 corners, as pairs of VTK corners.
+constexpr int kQuadraticEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                        {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+std::array<Eigen::Vector3d, 8> corners_of(const HexMesh& m, const std::array<int, 8>& h) {
+    std::array<Eigen::Vector3d, 8> p;
+    for (int c = 0; c < 8; ++c) p[c] = m.points.row(h[c]).transpose();
+    return p;
+}
+
+void add_hexes(const HexGrid& g, const BlockComplex& cx, HexMesh& out) {
+    for (size_t b = 0; b < g.block_ids.size(); ++b) {
+        const HexGrid::BlockGrid& bg = g.block_ids[b];
+        HexBlockStats stats;
+        stats.counts = bg.n;
+        stats.min_scaled_jacobian = 1;
+        for (int k = 0; k < bg.n[2]; ++k)
+            for (int j = 0; j < bg.n[1]; ++j)
+                for (int i = 0; i < bg.n[0]; ++i) {
+                    out.hexes.push_back(hex_of(bg, i, j, k));
+                    out.hex_block.push_back(cx.blocks[b].id);
+                    const double sj = hex_scaled_jacobian(corners_of(out, out.hexes.back()));
+                    out.scaled_jacobian.push_back(sj);
+                    stats.hexes += 1;
+                    stats.min_scaled_jacobian = std::min(stats.min_scaled_jacobian, sj);
+                }
+        out.blocks.push_back(stats);
+    }
+}
+
+// Each boundary face's grid quads, turned outward, with the B-rep face under each.
+void add_boundary_quads(const TetMesh& mesh, const BlockComplex& cx, const HexGrid& g, HexMesh& out) {
+    const SurfaceLocator locator(mesh);
+    for (size_t f = 0; f < cx.faces.size(); ++f) {
+        if (!cx.faces[f].boundary) continue;
+        const FaceProjector onto(mesh, cx.faces[f], locator);
+        const HexGrid::FaceGrid& fg = g.face_ids[f];
+        std::vector<std::array<int, 4>> quads;
+        std::vector<int> tags;
+        double agree = 0;
+        for (int t = 0; t < fg.nt; ++t)
+            for (int s = 0; s < fg.ns; ++s) {
+                const std::array<int, 4> q{fg.at(s, t), fg.at(s + 1, t), fg.at(s + 1, t + 1), fg.at(s, t + 1)};
+                Eigen::Vector3d c = Eigen::Vector3d::Zero();
+                for (int v : q) c += out.points.row(v).transpose() / 4;
+                const Eigen::Vector3d n = (out.points.row(q[2]) - out.points.row(q[0])).transpose().cross(
+                    (out.points.row(q[3]) - out.points.row(q[1])).transpose());
+                int tag = 0;
+                Eigen::Vector3d outward = Eigen::Vector3d::Zero();
+                onto.project(c, {}, &tag, &outward);
+                agree += n.dot(outward);
+                quads.push_back(q), tags.push_back(tag);
+            }
+        for (auto& q : quads)
+            if (agree < 0) std::swap(q[1], q[3]);
+        out.boundary_quads.insert(out.boundary_quads.end(), quads.begin(), quads.end());
+        out.quad_face.insert(out.quad_face.end(), tags.begin(), tags.end());
+    }
+}
+
+// Order 2: one vertex at the middle of every hex edge, on the B-rep face (or curve) under it.
+void add_midpoints(const TetMesh& mesh, const BlockComplex& cx, const HexGrid& g, const CadProjector& cad, HexMesh& out) {
+    const std::uint64_t nv = out.points.rows();
+    std::unordered_map<PairKey, int> mid;
+    std::vector<Eigen::Vector3d> extra;
+    auto midpoint = [&](int a, int b) {
+        auto [it, fresh] = mid.try_emplace(edge_key(a, b, nv), int(nv + extra.size()));
+        if (fresh) extra.push_back((out.points.row(a) + out.points.row(b)).transpose() / 2);
+        return it->second;
+    };
+    for (const auto& h : out.hexes) {
+        std::array<int, 12> m{};
+        for (int e = 0; e < 12; ++e) m[e] = midpoint(h[kQuadraticEdges[e][0]], h[kQuadraticEdges[e][1]]);
+        out.midpoints.push_back(m);
+    }
+    for (size_t q = 0; q < out.boundary_quads.size(); ++q)
+        for (int e = 0; e < 4 && out.quad_face[q] > 0 && cad.to_face; ++e) {
+            const int id = mid.at(edge_key(out.boundary_quads[q][e], out.boundary_quads[q][(e + 1) % 4], nv));
+            extra[size_t(id) - nv] = cad.to_face(out.quad_face[q], extra[size_t(id) - nv]);
+        }
+    const SurfaceLocator locator(mesh);
+    for (size_t e = 0; e < cx.edges.size(); ++e) {
+        const EdgeSupport support = edge_support(cx.edges[e], locator);
+        if (support.kind != EdgeSupport::curve) continue;
+        for (size_t i = 0; i + 1 < g.edge_ids[e].size(); ++i) {
+            const int id = mid.at(edge_key(g.edge_ids[e][i], g.edge_ids[e][i + 1], nv));
+            extra[size_t(id) - nv] = project_on_support(extra[size_t(id) - nv], support, cad);
+        }
+    }
+    out.points.conservativeResize(Eigen::Index(nv + extra.size()), 3);
+    for (size_t i = 0; i < extra.size(); ++i) out.points.row(Eigen::Index(nv + i)) = extra[i].transpose();
+}
+
+void measure(HexMesh& out) {
+    HexQuality& q = out.quality;
+    q.min_scaled_jacobian = out.scaled_jacobian.empty() ? 0 : 1;
+    int good = 0;
+    for (size_t h = 0; h < out.hexes.size(); ++h) {
+        const double sj = out.scaled_jacobian[h];
+        q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, sj);
+        q.mean_scaled_jacobian += sj / double(out.hexes.size());
+        good += sj >= 0.5;
+        q.inverted += sj <= 0;
+        q.volume += hex_volume(corners_of(out, out.hexes[h]));
+    }
+    q.share_sj_ge_0_5 = out.hexes.empty() ? 0 : double(good) / double(out.hexes.size());
+}
+
+}  // namespace
+
+HexMesh build_hexmesh(const TetMesh& mesh, const BlockDecomposition& blocks, const HexMeshOptions& options,
+                      const CadProjector& cad) {
+    const auto t0 = std::chrono::steady_clock::now();
+    HexMesh out;
+    try {
+        BlockComplex cx = block_complex(mesh, blocks);
+        if (!cx.failure.empty()) {
+            out.reason = cx.failure;
+            return out;
+        }
+        double size = options.size > 0 ? options.size : kDefaultHexSizeInH * blocks.h;
+        out.edge_classes = assign_edge_counts(cx, size, options.layers);
+        out.size = size;
+        HexGrid g = hex_grid(mesh, cx, cad);
+        smooth_hex_grid(options.smoothing_rounds, g);
+        out.points.resize(Eigen::Index(g.points.size()), 3);
+        for (size_t i = 0; i < g.points.size(); ++i) out.points.row(Eigen::Index(i)) = g.points[i].transpose();
+        add_hexes(g, cx, out);
+        add_boundary_quads(mesh, cx, g, out);
+        measure(out);
+        if (options.order == 2) add_midpoints(mesh, cx, g, cad, out);
+        out.done = true;
+    } catch (const Error& e) {
+        out = HexMesh{};
+        out.reason = e.message();
+    }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+}
+
+}  // namespace framefix

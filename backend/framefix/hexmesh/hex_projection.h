@@ -1,0 +1,52 @@
+#pragma once
+// Putting hex vertices on the part (internal to hexmesh): onto a block face's tet triangles,
+// then onto the B-rep face or edge under them.
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "framefix/hexmesh/block_structure.h"
+#include "framefix/hexmesh/hexmesh.h"
+#include "framefix/mesh/keys.h"
+
+namespace framefix {
+
+// Per mesh vertex: a B-rep face tag of a boundary triangle at it (0 inside) and a B-rep edge tag
+// of a feature edge at it (0 off the feature curves); per boundary triangle its face tag.
+struct SurfaceLocator {
+    std::vector<int> face_tag, edge_tag;
+    std::unordered_map<TriangleKey, int, TriangleKeyHash> triangle_tag;
+    explicit SurfaceLocator(const TetMesh& mesh);
+};
+
+struct EdgeSupport {
+    enum Kind { inside, face, curve } kind = inside;
+    int tag = 0;                   // B-rep face or edge tag
+};
+
+// A CAD edge when most of the chain's mesh edges lie on one feature curve; else a CAD face when
+// most of its vertices are on the boundary; else inside.
+EdgeSupport edge_support(const ComplexEdge& edge, const SurfaceLocator& at);
+Eigen::Vector3d project_on_support(const Eigen::Vector3d& p, const EdgeSupport& support, const CadProjector& cad);
+// A B-rep vertex stays; else onto the feature curve or the boundary face its cluster touches.
+Eigen::Vector3d project_corner(const TetMesh& mesh, const ComplexCorner& corner, const SurfaceLocator& at,
+                               const CadProjector& cad);
+
+// Closest point on a complex face's triangles; on the boundary, then onto the B-rep face of the
+// closest triangle.
+class FaceProjector {
+public:
+    FaceProjector(const TetMesh& mesh, const ComplexFace& face, const SurfaceLocator& at);
+    // `tag`: the closest triangle's B-rep face (0 between blocks); `normal`: its unit normal,
+    // outward from the face's first block.
+    Eigen::Vector3d project(const Eigen::Vector3d& p, const CadProjector& cad, int* tag = nullptr,
+                            Eigen::Vector3d* normal = nullptr) const;
+
+private:
+    std::vector<std::array<Eigen::Vector3d, 3>> tris_;
+    std::vector<int> tags_;
+    bool boundary_;
+};
+
+}  // namespace framefix
