@@ -95,7 +95,7 @@ void add_midpoints(const TetMesh& mesh, const BlockComplex& cx, const HexGrid& g
         }
     const SurfaceLocator locator(mesh);
     for (size_t e = 0; e < cx.edges.size(); ++e) {
-        const EdgeSupport support = edge_support(cx.edges[e], locator);
+        const EdgeSupport support = edge_support(mesh, cx.edges[e], locator);
         if (support.kind != EdgeSupport::curve) continue;
         for (size_t i = 0; i + 1 < g.edge_ids[e].size(); ++i) {
             const int id = mid.at(edge_key(g.edge_ids[e][i], g.edge_ids[e][i + 1], nv));

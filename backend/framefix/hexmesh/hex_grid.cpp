@@ -180,7 +180,7 @@ HexGrid hex_grid(const TetMesh& mesh, const BlockComplex& cx, const CadProjector
         g.on_face.push_back(1);
     }
     for (const ComplexEdge& e : cx.edges) {
-        const EdgeSupport support = edge_support(e, locator);
+        const EdgeSupport support = edge_support(mesh, e, locator);
         const Points line = support.kind == EdgeSupport::curve ? e.polyline : smoothed(e.polyline, kEdgeSmoothingRounds);
         const std::vector<Eigen::Vector3d> pts = resample(line, e.count);
         std::vector<int> ids{e.a};

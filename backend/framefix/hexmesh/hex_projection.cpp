@@ -32,26 +32,46 @@ SurfaceLocator::SurfaceLocator(const TetMesh& mesh) : face_tag(mesh.num_vertices
         for (int k = 0; k < 2; ++k) edge_tag[mesh.feature_edges(e, k)] = mesh.edge_tags[e];
 }
 
-EdgeSupport edge_support(const ComplexEdge& edge, const SurfaceLocator& at) {
+EdgeSupport edge_support(const TetMesh& mesh, const ComplexEdge& edge, const SurfaceLocator& at) {
+    EdgeSupport s;
+    const int n = int(edge.chain.size());
+    s.chain.resize(n, 3);
     std::vector<int> curves, faces;
-    int on_boundary = 0;
-    for (size_t i = 0; i < edge.chain.size(); ++i) {
-        const int v = edge.chain[i];
+    int on_curve = 0, on_boundary = 0;
+    for (int i = 0; i < n; ++i) {
+        const int v = edge.chain[size_t(i)];
+        s.chain.row(i) = mesh.points.row(v);
         on_boundary += at.face_tag[v] > 0;
-        if (at.face_tag[v] > 0) faces.push_back(at.face_tag[v]);
-        // A segment on a feature curve: both ends carry the curve's tag.
-        if (i + 1 < edge.chain.size() && at.edge_tag[v] > 0 && at.edge_tag[v] == at.edge_tag[edge.chain[i + 1]])
-            curves.push_back(at.edge_tag[v]);
+        faces.push_back(at.face_tag[v]);
+        if (i + 1 == n) continue;
+        // A segment on a feature curve: both ends carry the curve's tag (a B-rep vertex carries one of its curves').
+        const int w = edge.chain[size_t(i + 1)];
+        const int tag = at.edge_tag[v] > 0 && at.edge_tag[v] == at.edge_tag[w] ? at.edge_tag[v] : std::max(at.edge_tag[v], at.edge_tag[w]);
+        on_curve += at.edge_tag[v] > 0 && at.edge_tag[w] > 0;
+        curves.push_back(tag);
     }
-    const int segments = std::max(1, int(edge.chain.size()) - 1);
-    if (2 * int(curves.size()) >= segments && mode(curves) > 0) return {EdgeSupport::curve, mode(curves)};
-    if (2 * on_boundary >= int(edge.chain.size()) && mode(faces) > 0) return {EdgeSupport::face, mode(faces)};
-    return {};
+    if (n >= 2 && 2 * on_curve >= n - 1) s.kind = EdgeSupport::curve, s.tags = curves;
+    else if (2 * on_boundary >= n) s.kind = EdgeSupport::face, s.tags = faces;
+    return s;
 }
 
-Eigen::Vector3d project_on_support(const Eigen::Vector3d& p, const EdgeSupport& support, const CadProjector& cad) {
-    if (support.kind == EdgeSupport::curve && cad.to_edge) return cad.to_edge(support.tag, p);
-    if (support.kind == EdgeSupport::face && cad.to_face) return cad.to_face(support.tag, p);
+Eigen::Vector3d project_on_support(const Eigen::Vector3d& p, const EdgeSupport& s, const CadProjector& cad) {
+    if (s.kind == EdgeSupport::inside || s.chain.rows() == 0) return p;
+    int best = 0;
+    double nearest = 1e300;
+    const bool curve = s.kind == EdgeSupport::curve;
+    for (int i = 0; i + (curve ? 1 : 0) < int(s.chain.rows()); ++i) {
+        const Eigen::Vector3d a = s.chain.row(i).transpose();
+        double d = (p - a).squaredNorm();
+        if (curve) {
+            const Eigen::Vector3d ab = s.chain.row(i + 1).transpose() - a;
+            const double f = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0;
+            d = (p - a - f * ab).squaredNorm();
+        }
+        if (s.tags[size_t(i)] > 0 && d < nearest) nearest = d, best = s.tags[size_t(i)];
+    }
+    if (best > 0 && curve && cad.to_edge) return cad.to_edge(best, p);
+    if (best > 0 && !curve && cad.to_face) return cad.to_face(best, p);
     return p;
 }
 
@@ -61,8 +81,8 @@ Eigen::Vector3d project_corner(const TetMesh& mesh, const ComplexCorner& corner,
         if (std::binary_search(corner.vertices.begin(), corner.vertices.end(), mesh.corner_vertices[i])) return corner.position;
     std::vector<int> curves, faces;
     for (int v : corner.vertices) curves.push_back(at.edge_tag[v]), faces.push_back(at.face_tag[v]);
-    if (mode(curves) > 0) return project_on_support(corner.position, {EdgeSupport::curve, mode(curves)}, cad);
-    if (mode(faces) > 0) return project_on_support(corner.position, {EdgeSupport::face, mode(faces)}, cad);
+    if (mode(curves) > 0 && cad.to_edge) return cad.to_edge(mode(curves), corner.position);
+    if (mode(faces) > 0 && cad.to_face) return cad.to_face(mode(faces), corner.position);
     return corner.position;
 }
 

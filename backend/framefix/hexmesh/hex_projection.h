@@ -20,14 +20,17 @@ struct SurfaceLocator {
     explicit SurfaceLocator(const TetMesh& mesh);
 };
 
+// What a complex edge lies on: feature curves when most of its chain's mesh edges lie on them,
+// else the boundary when most of its vertices do, else nothing. Per chain segment the B-rep edge
+// or face tag under it: one hex edge may run along two CAD edges (an imprint ends on it).
 struct EdgeSupport {
     enum Kind { inside, face, curve } kind = inside;
-    int tag = 0;                   // B-rep face or edge tag
+    Points chain;                  // the chain's vertex positions
+    std::vector<int> tags;         // per segment (curve) or per vertex (face)
 };
 
-// A CAD edge when most of the chain's mesh edges lie on one feature curve; else a CAD face when
-// most of its vertices are on the boundary; else inside.
-EdgeSupport edge_support(const ComplexEdge& edge, const SurfaceLocator& at);
+EdgeSupport edge_support(const TetMesh& mesh, const ComplexEdge& edge, const SurfaceLocator& at);
+// Onto the B-rep edge or face under the chain segment (vertex) nearest p.
 Eigen::Vector3d project_on_support(const Eigen::Vector3d& p, const EdgeSupport& support, const CadProjector& cad);
 // A B-rep vertex stays; else onto the feature curve or the boundary face its cluster touches.
 Eigen::Vector3d project_corner(const TetMesh& mesh, const ComplexCorner& corner, const SurfaceLocator& at,
