@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "framefix/core/disjoint_set.h"
 #include "framefix/hexmesh/hex_projection.h"
@@ -175,31 +176,52 @@ int assign_edge_counts(BlockComplex& cx, double& size, int layers) {
 HexGrid hex_grid(const TetMesh& mesh, const BlockComplex& cx, const CadProjector& cad) {
     HexGrid g;
     const SurfaceLocator locator(mesh);
-    for (const ComplexCorner& c : cx.corners) {
-        g.points.push_back(project_corner(mesh, c, locator, cad));
+    // The boundary faces' projectors, and for each corner and edge one boundary face it bounds.
+    // An edge off the feature curves goes onto that face's own triangles, not by its chain's
+    // vertices: where the patch cleaning merged interface triangles into a boundary face, the
+    // chain between them runs partly inside the part, through vertices of other CAD faces.
+    std::vector<std::optional<FaceProjector>> onto(cx.faces.size());
+    std::map<std::pair<int, int>, int> face_of_edge;
+    std::vector<int> face_of_corner(cx.corners.size(), -1);
+    for (size_t f = 0; f < cx.faces.size(); ++f) {
+        if (!cx.faces[f].boundary) continue;
+        onto[f].emplace(mesh, cx.faces[f], locator);
+        const auto& c = cx.faces[f].corners;
+        for (int n = 0; n < 4; ++n) {
+            face_of_edge.try_emplace(std::minmax(c[n], c[(n + 1) % 4]), int(f));
+            if (face_of_corner[c[n]] < 0) face_of_corner[c[n]] = int(f);
+        }
+    }
+    for (size_t c = 0; c < cx.corners.size(); ++c) {
+        Eigen::Vector3d p = project_corner(mesh, cx.corners[c], locator, cad);
+        if (p == cx.corners[c].position && face_of_corner[c] >= 0) p = onto[size_t(face_of_corner[c])]->project(p, cad);
+        g.points.push_back(p);
         g.on_face.push_back(1);
     }
     for (const ComplexEdge& e : cx.edges) {
         const EdgeSupport support = edge_support(mesh, e, locator);
         const Points line = support.kind == EdgeSupport::curve ? e.polyline : smoothed(e.polyline, kEdgeSmoothingRounds);
         const std::vector<Eigen::Vector3d> pts = resample(line, e.count);
+        const auto face = face_of_edge.find({e.a, e.b});
         std::vector<int> ids{e.a};
         for (int k = 1; k < e.count; ++k) {
             ids.push_back(int(g.points.size()));
-            g.points.push_back(project_on_support(pts[size_t(k)], support, cad));
+            const Eigen::Vector3d& p = pts[size_t(k)];
+            g.points.push_back(support.kind != EdgeSupport::curve && face != face_of_edge.end()
+                                   ? onto[size_t(face->second)]->project(p, cad)
+                                   : project_on_support(p, support, cad));
             g.on_face.push_back(1);
         }
         ids.push_back(e.b);
         g.edge_ids.push_back(std::move(ids));
     }
     const EdgeLookup edges(cx, g.edge_ids);
-    for (const ComplexFace& f : cx.faces) {
-        g.face_ids.push_back(face_grid(f, edges, g));
-        if (!f.boundary) continue;  // an interface's triangles are a tet staircase: its Coons patch is smoother
+    for (size_t f = 0; f < cx.faces.size(); ++f) {
+        g.face_ids.push_back(face_grid(cx.faces[f], edges, g));
+        if (!onto[f]) continue;  // an interface's triangles are a tet staircase: its Coons patch is smoother
         const HexGrid::FaceGrid& fg = g.face_ids.back();
-        const FaceProjector onto(mesh, f, locator);
         for (int t = 1; t < fg.nt; ++t)
-            for (int s = 1; s < fg.ns; ++s) g.points[size_t(fg.at(s, t))] = onto.project(g.points[size_t(fg.at(s, t))], cad);
+            for (int s = 1; s < fg.ns; ++s) g.points[size_t(fg.at(s, t))] = onto[f]->project(g.points[size_t(fg.at(s, t))], cad);
     }
     for (const ComplexBlock& b : cx.blocks) g.block_ids.push_back(block_grid(cx, b, g));
     return g;

@@ -87,11 +87,16 @@ Eigen::Vector3d project_corner(const TetMesh& mesh, const ComplexCorner& corner,
 }
 
 FaceProjector::FaceProjector(const TetMesh& mesh, const ComplexFace& face, const SurfaceLocator& at) : boundary_(face.boundary) {
-    for (const Eigen::Vector3i& t : face.triangles) {
-        tris_.push_back({mesh.points.row(t[0]).transpose(), mesh.points.row(t[1]).transpose(), mesh.points.row(t[2]).transpose()});
-        const auto it = at.triangle_tag.find(triangle_key(t[0], t[1], t[2]));
-        tags_.push_back(it == at.triangle_tag.end() ? 0 : it->second);
-    }
+    // A boundary face's patch may hold a few interface triangles the patch cleaning merged into
+    // it; its points go onto the part's own triangles only.
+    for (int pass = 0; pass < 2 && tris_.empty(); ++pass)
+        for (const Eigen::Vector3i& t : face.triangles) {
+            const auto it = at.triangle_tag.find(triangle_key(t[0], t[1], t[2]));
+            const int tag = it == at.triangle_tag.end() ? 0 : it->second;
+            if (pass == 0 && boundary_ && tag == 0) continue;
+            tris_.push_back({mesh.points.row(t[0]).transpose(), mesh.points.row(t[1]).transpose(), mesh.points.row(t[2]).transpose()});
+            tags_.push_back(tag);
+        }
 }
 
 Eigen::Vector3d FaceProjector::project(const Eigen::Vector3d& p, const CadProjector& cad, int* tag,
