@@ -28,7 +28,7 @@ def analyze(tmp_path):
     return go
 
 
-STAGE_ORDER = ["load", "mesh", "field", "singularities", "correct", "blocks"]
+STAGE_ORDER = ["load", "mesh", "field", "singularities", "correct", "blocks", "hexmesh"]
 
 
 def progress_stages(stderr):
