@@ -15,14 +15,19 @@ namespace framefix::python {
 namespace {
 
 Stage stage_named(const std::string& name) {
-    for (Stage s : {Stage::load, Stage::mesh, Stage::field, Stage::singularities, Stage::correction, Stage::blocks})
+    for (Stage s : {Stage::load, Stage::mesh, Stage::field, Stage::singularities, Stage::correction, Stage::blocks, Stage::hexmesh})
         if (name == stage_name(s)) return s;
-    throw Error("options", "unknown stage '" + name + "'; use load, mesh, field, singularities, correct or blocks");
+    throw Error("options", "unknown stage '" + name + "'; use load, mesh, field, singularities, correct, blocks or hexmesh");
 }
 
+struct HexArgs { double size = 0; int layers = 0, order = 1; };
+
 RunOptions make_options(const std::string& stop_after, const std::string& method, double size, double size_factor,
-                        int threads, double budget_s, bool fillet_rims) {
+                        int threads, double budget_s, bool fillet_rims, const HexArgs& hex) {
     RunOptions o;
+    o.hexmesh.size = hex.size;
+    o.hexmesh.layers = hex.layers;
+    o.hexmesh.order = hex.order;
     o.budget_s = budget_s;
     o.fillet.rims = fillet_rims;
     o.stop_after = stage_named(stop_after);
@@ -120,6 +125,34 @@ void bind_blocks(py::module_& m) {
         .def_readonly("pairs", &BlockDecomposition::pairs);
 }
 
+void bind_hexmesh(py::module_& m) {
+    py::class_<HexMesh>(m, "HexMesh", "The hex mesh of the blocks, or why there is none")
+        .def_readonly("done", &HexMesh::done)
+        .def_readonly("reason", &HexMesh::reason, "why there is no hex mesh, when not done")
+        .def_readonly("points", &HexMesh::points, "#V x 3")
+        .def_property_readonly("hexes", [](const HexMesh& h) {
+            Eigen::Matrix<int, Eigen::Dynamic, 8, Eigen::RowMajor> out(Eigen::Index(h.hexes.size()), 8);
+            for (size_t i = 0; i < h.hexes.size(); ++i)
+                for (int c = 0; c < 8; ++c) out(Eigen::Index(i), c) = h.hexes[i][c];
+            return out;
+        }, "#H x 8 vertex ids in VTK_HEXAHEDRON / C3D8 order")
+        .def_property_readonly("midpoints", [](const HexMesh& h) {
+            Eigen::Matrix<int, Eigen::Dynamic, 12, Eigen::RowMajor> out(Eigen::Index(h.midpoints.size()), 12);
+            for (size_t i = 0; i < h.midpoints.size(); ++i)
+                for (int c = 0; c < 12; ++c) out(Eigen::Index(i), c) = h.midpoints[i][c];
+            return out;
+        }, "order 2: #H x 12 edge-midpoint ids in C3D20 order; else 0 rows")
+        .def_readonly("hex_block", &HexMesh::hex_block, "block id per hex")
+        .def_readonly("scaled_jacobian", &HexMesh::scaled_jacobian, "minimum scaled Jacobian per hex")
+        .def_property_readonly("quality", [](const HexMesh& h) {
+            const HexQuality& q = h.quality;
+            return py::dict(py::arg("min_scaled_jacobian") = q.min_scaled_jacobian,
+                            py::arg("mean_scaled_jacobian") = q.mean_scaled_jacobian,
+                            py::arg("share_sj_ge_0_5") = q.share_sj_ge_0_5, py::arg("inverted") = q.inverted,
+                            py::arg("volume") = q.volume);
+        });
+}
+
 void bind_result(py::module_& m) {
     py::class_<RunResult>(m, "Analysis", "Every stage a run reached (None for the others), plus its report")
         .def_readonly("input_path", &RunResult::input_path)
@@ -140,6 +173,7 @@ void bind_result(py::module_& m) {
         .def_property_readonly("singularities", [](const RunResult& r) { return optional_of(r.singularities); })
         .def_property_readonly("correction", [](const RunResult& r) { return optional_of(r.correction); })
         .def_property_readonly("blocks", [](const RunResult& r) { return optional_of(r.blocks); })
+        .def_property_readonly("hexmesh", [](const RunResult& r) { return optional_of(r.hexmesh); })
         .def_property_readonly("report_json", [](const RunResult& r) { return report_json(r); })
         .def("write_outputs", [](const RunResult& r, const std::string& dir) { return write_outputs(r, dir); },
              py::arg("folder"))
@@ -151,27 +185,30 @@ void bind_result(py::module_& m) {
 void bind_pipeline(py::module_& m) {
     bind_correction(m);
     bind_blocks(m);
+    bind_hexmesh(m);
     bind_result(m);
     m.def(
         "run_file",
         [](const std::string& path, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads, double budget_s, bool fillet_rims) {
-            return run(RunInput::file(path),
-                       make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims));
+           double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order) {
+            return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
+                                                         HexArgs{hex_size, layers, order}));
         },
         py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
-        py::arg("fillet_rims") = false, py::call_guard<py::gil_scoped_release>());
+        py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
+        py::call_guard<py::gil_scoped_release>());
     m.def(
         "run_shape",
         [](const BrepModel& shape, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads, double budget_s, bool fillet_rims) {
-            return run(RunInput::shape(shape),
-                       make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims));
+           double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order) {
+            return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
+                                                         HexArgs{hex_size, layers, order}));
         },
         py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
-        py::arg("fillet_rims") = false, py::call_guard<py::gil_scoped_release>());
+        py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
+        py::call_guard<py::gil_scoped_release>());
     m.def("info_json", &info_json, "`framefix info`: defaults and correction methods, as JSON text");
 }
 

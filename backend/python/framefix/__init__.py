@@ -7,32 +7,34 @@ import json as _json
 
 from . import _core
 from ._core import (Error, Shape, EdgeFeature, TetMesh, FrameField, SingularityGraph,
-                    SingularCurve, SingularNode, Analysis, Correction, Blocks, load_shape,
+                    SingularCurve, SingularNode, Analysis, Correction, Blocks, HexMesh, load_shape,
                     load_brep_string, to_brep_string, classify_features, default_size,
                     tetrahedralize, mesh_quality, solve_frame_field, extract_singularities)
 
 __all__ = ["Error", "Shape", "TetMesh", "FrameField", "SingularityGraph", "Analysis",
-           "Correction", "Blocks", "load_shape", "load_brep_string", "to_brep_string",
+           "Correction", "Blocks", "HexMesh", "load_shape", "load_brep_string", "to_brep_string",
            "classify_features", "default_size", "tetrahedralize", "mesh_quality",
            "solve_frame_field", "extract_singularities", "run", "mesh_part", "analyze",
-           "correct", "build_blocks", "info", "correction_methods", "report"]
+           "correct", "build_blocks", "hex_mesh", "info", "correction_methods", "report"]
 
 
 def run(part, stop_after="singularities", method="auto", size=None, size_factor=1.0, threads=0,
-        budget_s=0.0, fillet_rims=False):
+        budget_s=0.0, fillet_rims=False, hex_size=None, layers=0, order=1):
     """The pipeline on a file path, a :class:`Shape`, or a BREP string, up to `stop_after`
-    (load, mesh, field, singularities, correct, blocks); `method` is the correction (see
+    (load, mesh, field, singularities, correct, blocks, hexmesh); `method` is the correction (see
     :func:`correction_methods`), or "none"; `budget_s` is method auto's time budget (0: 120 s
     per 50k tets); `fillet_rims` makes method fillet fillet the rims across the wall from each
     concave edge too (a groove turns smooth). Returns an :class:`Analysis` whose stages past
     `stop_after` are None; ``report(result)`` gives report.json's content as a dict.
+    `hex_size`, `layers` and `order` are the hex mesh's (see :func:`hex_mesh`).
     """
     size = float(size or 0.0)
+    hex_args = (float(hex_size or 0.0), int(layers), int(order))
     if isinstance(part, str) and part.lstrip().startswith("DBRep_DrawableShape"):
         part = load_brep_string(part)
     if isinstance(part, Shape):
-        return _core.run_shape(part, stop_after, method, size, size_factor, threads, budget_s, fillet_rims)
-    return _core.run_file(str(part), stop_after, method, size, size_factor, threads, budget_s, fillet_rims)
+        return _core.run_shape(part, stop_after, method, size, size_factor, threads, budget_s, fillet_rims, *hex_args)
+    return _core.run_file(str(part), stop_after, method, size, size_factor, threads, budget_s, fillet_rims, *hex_args)
 
 
 def mesh_part(part, size=None, size_factor=1.0, threads=0):
@@ -62,6 +64,18 @@ def build_blocks(part, method="auto", size=None, size_factor=1.0, threads=0, bud
     ``report(result)["blocks"]`` the validation.
     """
     return run(part, "blocks", method, size, size_factor, threads, budget_s, fillet_rims)
+
+
+def hex_mesh(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False,
+             hex_size=None, layers=0, order=1):
+    """Analyse, correct, cut into blocks, then mesh the blocks with hexahedra.
+
+    `hex_size` is the target hex edge length (default: two tet edges), `layers` the hexes along
+    the shortest block edge (overrides it), `order` 1 (8-node) or 2 (20-node). ``.hexmesh`` has
+    ``.done`` (and ``.reason`` when not), ``.points``, ``.hexes`` (VTK order), ``.hex_block``,
+    ``.scaled_jacobian`` and ``.quality``.
+    """
+    return run(part, "hexmesh", method, size, size_factor, threads, budget_s, fillet_rims, hex_size, layers, order)
 
 
 def info():

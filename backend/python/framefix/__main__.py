@@ -1,4 +1,4 @@
-"""``python -m framefix mesh|analyze|correct|blocks PART [--size H] [--out DIR]`` and
+"""``python -m framefix mesh|analyze|correct|blocks|hexmesh PART [--size H] [--out DIR]`` and
 ``python -m framefix info``: the command line, in Python.
 
 Same exit codes as the ``framefix`` program: 0 done, 2 bad input, 3 internal error.
@@ -7,7 +7,7 @@ import argparse
 import sys
 
 
-STAGES = {"mesh": "mesh", "analyze": "singularities", "correct": "correct", "blocks": "blocks"}
+STAGES = {"mesh": "mesh", "analyze": "singularities", "correct": "correct", "blocks": "blocks", "hexmesh": "hexmesh"}
 
 
 def main(argv=None):
@@ -26,6 +26,9 @@ def main(argv=None):
     parser.add_argument("--method", default="auto")
     parser.add_argument("--budget-s", type=float, default=0.0)
     parser.add_argument("--fillet-rims", action="store_true")
+    parser.add_argument("--hex-size", type=float, default=0.0)
+    parser.add_argument("--layers", type=int, default=0)
+    parser.add_argument("--order", type=int, default=1)
     try:
         args = parser.parse_args(argv)
     except SystemExit as e:
@@ -35,7 +38,7 @@ def main(argv=None):
         if args.command == "correct" and args.method == "none":
             raise framefix.Error("correct: method 'none' corrects nothing; use analyze, or --method snap")
         result = framefix.run(args.part, STAGES[args.command], args.method, args.size, args.size_factor,
-                              args.threads, args.budget_s, args.fillet_rims)
+                              args.threads, args.budget_s, args.fillet_rims, args.hex_size, args.layers, args.order)
         result.write_outputs(args.out)
     except framefix.Error as e:
         print(f"framefix: error [{str(e).split(':', 1)[0]}]: {str(e).split(': ', 1)[-1]}", file=sys.stderr)
