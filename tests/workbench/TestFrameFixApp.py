@@ -292,6 +292,62 @@ class Blocks(unittest.TestCase):
             FreeCAD.closeDocument(doc.Name)
 
 
+class HexMeshFem(unittest.TestCase):
+    """The notch's hex mesh in FreeCAD's FEM workbench: a CalculiX static analysis, fixed on the
+    bottom face with a pressure on the top face, gives displacements (downwards on top)."""
+
+    def setUp(self):
+        self.doc = FreeCAD.newDocument("FrameFixHexMesh")
+        self.part = self.doc.addObject("Part::Feature", "Notch")
+        self.part.Shape = Part.read(NOTCH)
+        self.doc.recompute()
+
+    def tearDown(self):
+        FreeCAD.closeDocument(self.doc.Name)
+
+    def _face(self, pick):
+        """Name of the planar face with normal +-z whose height `pick` (min or max) selects."""
+        flat = [(f.CenterOfMass.z, "Face%d" % (i + 1)) for i, f in enumerate(self.part.Shape.Faces)
+                if f.Surface.__class__.__name__ == "Plane" and abs(abs(f.normalAt(0, 0).z) - 1) < 1e-9]
+        return pick(flat)[1]
+
+    @unittest.skipUnless(os.path.exists("/usr/bin/ccx"), "CalculiX (calculix-ccx) is not installed")
+    def test_calculix_runs_on_the_notchs_hex_mesh(self):
+        import ObjectsFem
+        from femtools import ccxtools
+        hexes = make.make_hex_mesh(self.part, method="snap")
+        report = report_of(hexes.Analysis)["hexmesh"]
+        self.assertEqual(hexes.FemMesh.HexaCount, report["hexes"])
+        self.assertEqual(hexes.FemMesh.VolumeCount, report["hexes"])
+        fem = ObjectsFem.makeAnalysis(self.doc, "Analysis")
+        solver = ObjectsFem.makeSolverCalculixCcxTools(self.doc, "CalculiX")
+        material = ObjectsFem.makeMaterialSolid(self.doc, "Steel")
+        material.Material = {"Name": "Steel", "YoungsModulus": "210000 MPa", "PoissonRatio": "0.3",
+                             "Density": "7900 kg/m^3"}
+        fixed = ObjectsFem.makeConstraintFixed(self.doc, "Fixed")
+        fixed.References = [(self.part, self._face(min))]
+        pressure = ObjectsFem.makeConstraintPressure(self.doc, "Pressure")
+        pressure.References = [(self.part, self._face(max))]
+        pressure.Pressure = 1.0
+        for obj in (solver, material, fixed, pressure, hexes):
+            fem.addObject(obj)
+        self.doc.recompute()
+        fea = ccxtools.FemToolsCcx(fem, solver)
+        fea.update_objects()
+        fea.setup_working_dir()
+        fea.setup_ccx()
+        self.assertEqual(fea.check_prerequisites(), "")
+        fea.write_inp_file()
+        fea.ccx_run()
+        fea.load_results()
+        results = [o for o in fem.Group if o.isDerivedFrom("Fem::FemResultObject")]
+        self.assertEqual(len(results), 1, fea.ccx_stdout if hasattr(fea, "ccx_stdout") else "")
+        lengths = list(results[0].DisplacementLengths)
+        self.assertEqual(len(lengths), hexes.FemMesh.NodeCount)
+        self.assertGreater(max(lengths), 0)
+        self.assertEqual(len(self.part.Shape.Faces), len(Part.read(NOTCH).Faces))  # the part is untouched
+
+
 class BackendInfo(unittest.TestCase):
     """The workbench's methods and sizing come from the real backend's `framefix info`."""
 

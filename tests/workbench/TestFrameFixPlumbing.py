@@ -429,8 +429,10 @@ class BlocksPlumbing(unittest.TestCase):
         j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, method="snap", blocks=True)
         try:
             self.assertEqual(j.argv[-2:], ["--method", "snap"])
-            self.assertIn("blocks", j.argv)
-            self.assertAlmostEqual(j.overall_fraction("blocks", 1.0), 1.0)
+            self.assertIn("hexmesh", j.argv)  # a block run meshes its blocks too
+            self.assertNotIn("--order", j.argv)
+            self.assertAlmostEqual(j.overall_fraction("hexmesh", 1.0), 1.0)
+            self.assertLess(j.overall_fraction("blocks", 1.0), 1.0)
             self.assertLess(j.overall_fraction("correct", 0.0), 1.0)
         finally:
             j.cleanup()
@@ -446,7 +448,7 @@ class BlocksPlumbing(unittest.TestCase):
         group = blocks.getParentGroup()
         self.assertEqual(group.Label, "FrameFix blocks (auto: snap) of Box")  # auto kept snap
         names = sorted(type(o.Proxy).__name__ for o in group.Group)
-        self.assertEqual(names, ["BlockEdges", "BlockSurfaces", "Blocks", "FeatureCurves",
+        self.assertEqual(names, ["BlockEdges", "BlockSurfaces", "Blocks", "FeatureCurves", "HexMesh",
                                  "SingularCurves", "SingularNodes", "SnappedPaths"])
         self.assertEqual(blocks.Analysis.Curves35, 0)
 
@@ -552,6 +554,62 @@ class BlocksPlumbing(unittest.TestCase):
                 f.write("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"
                         "POINTS 8 double\n0 0 0\n")
             with self.assertRaisesRegex(BackendError, "blocks.vtk is unusable"):
+                j.finish(0)
+        finally:
+            j.cleanup()
+
+    def test_hex_mesh_is_a_fem_mesh_of_hexa8(self):
+        hexes = analysis.make_hex_mesh(self.box, 0.5)
+        self.assertTrue(hexes.isDerivedFrom("Fem::FemMeshObject"))
+        fem = hexes.FemMesh
+        self.assertEqual((fem.NodeCount, fem.VolumeCount, fem.HexaCount), (8, 1, 1))
+        # FreeCAD's node order (as its .inp reader maps C3D8): node 1 is C3D8's node 6 = (1, 0, 1)
+        self.assertEqual(tuple(fem.getNodeById(fem.getElementNodes(1)[0])), (1.0, 0.0, 1.0))
+        self.assertEqual(list(hexes.ScaledJacobians), [1.0])
+        self.assertEqual((hexes.Hexes, hexes.Inverted), (1, 0))
+        self.assertEqual(hexes.Summary, "1 hex, min scaled Jacobian 1.00, 0 inverted")
+        self.assertEqual(hexes.getParentGroup().Label, "FrameFix blocks (auto: snap) of Box")
+
+    def test_hex_mesh_of_order_two_is_hexa20_and_reruns_when_the_order_changes(self):
+        hexes = analysis.make_hex_mesh(self.box, 0.5, order=2)
+        self.assertEqual((hexes.FemMesh.NodeCount, hexes.FemMesh.VolumeCount), (20, 1))
+        self.assertEqual(len(hexes.FemMesh.getElementNodes(1)), 20)
+        self.assertIn("(20-node)", hexes.Summary)
+        curves = hexes.Analysis
+        curves.HexOrder = 1
+        curves.touch()
+        self.doc.recompute()
+        self.assertEqual((hexes.FemMesh.NodeCount, hexes.FemMesh.VolumeCount), (8, 1))
+
+    def test_blocks_that_cannot_be_meshed_are_a_message_and_no_hex_mesh(self):
+        use_backend("canned.py")
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.5, blocks=True)
+        try:
+            runner.run_sync(j)
+            path = os.path.join(j.out_dir, "report.json")
+            with open(path) as f:
+                data = json.load(f)
+            data["hexmesh"] = {"done": False, "reason": "block 1 is not a hexahedron (faces 5)"}
+            with open(path, "w") as f:
+                json.dump(data, f)
+            report_ = j.finish(0)
+            self.assertIsNone(report_["block_mesh"]["hexes"])
+            self.assertEqual(report.hexmesh_text(report_["hexmesh"]),
+                             "no hex mesh: block 1 is not a hexahedron (faces 5)")
+        finally:
+            j.cleanup()
+
+    def test_bad_hex_vtk_is_refused(self):
+        use_backend("canned.py")
+        j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.5, blocks=True)
+        try:
+            runner.run_sync(j)
+            path = os.path.join(j.out_dir, "hex.vtk")
+            with open(path) as f:
+                text = f.read()
+            with open(path, "w") as f:
+                f.write(text.replace("8 0 1 2 3 4 5 6 7", "8 0 1 2 3 4 5 6 99"))
+            with self.assertRaisesRegex(BackendError, "hex.vtk is unusable: a cell names"):
                 j.finish(0)
         finally:
             j.cleanup()

@@ -12,10 +12,13 @@ import shutil
 import signal
 import tempfile
 
+import numpy
+
 from .backend import find_backend
 from .errors import BackendError
 from .report import load_report
-from .vtk import VTK_POLY_LINE, VTK_TRIANGLE, read_cells, read_tets
+from .vtk import (VTK_HEXAHEDRON, VTK_POLY_LINE, VTK_QUADRATIC_HEXAHEDRON, VTK_TRIANGLE,
+                  read_cells, read_tets)
 
 DEFAULT_TIMEOUT_S = 1800.0
 # Share of the whole run each backend stage takes, measured roughly on the samples, by
@@ -26,7 +29,7 @@ COMMAND_STAGE_WEIGHTS = {
     "correct": (("load", 0.03), ("mesh", 0.15), ("field", 0.35), ("singularities", 0.07),
                 ("correct", 0.40)),
     "blocks": (("load", 0.03), ("mesh", 0.14), ("field", 0.32), ("singularities", 0.06),
-               ("correct", 0.35), ("blocks", 0.10)),
+               ("correct", 0.34), ("blocks", 0.09), ("hexmesh", 0.02)),
 }
 MAX_LINE = 4096  # longer output lines are cut: a backend printing binary garbage stays cheap
 KEPT_LINES = 500  # the last output lines kept for error messages
@@ -66,19 +69,21 @@ def timeout_from_env(default=DEFAULT_TIMEOUT_S):
 BLOCKS_VTK = "blocks.vtk"  # the tets labelled by block, beside report.json
 BLOCK_SURFACES_VTK = "block_surfaces.vtk"  # each block's boundary, smoothed for display
 BLOCK_EDGES_VTK = "block_edges.vtk"  # each block's edges, smoothed polylines
+HEX_VTK = "hex.vtk"  # the hex mesh of the blocks, when they could be meshed
 FILLETED_BREP = "filleted.brep"  # the fillet correction's solid, beside report.json
 
 
 class AnalysisJob:
     """`framefix analyze <tmp>/shape.brep [--size H] --out <tmp>/out` for one shape, or with
     `method`, `framefix correct ... --method M` (analyze, correct, analyze again), or with
-    `blocks`, `framefix blocks ... [--method M]` (and the block mesh in the report). The
+    `blocks`, `framefix hexmesh ... [--method M] [--order 2]` (the blocks and, when they can
+    be meshed, their hex mesh: both in report["block_mesh"]). The
     methods are the backend's to check (runs.check_method asks it first). `out_dir`: where
     the backend writes (kept), else a folder in the job's temporary one. `fillet_rims`: the
     fillet correction also fillets the convex rims across a strip from each concave edge."""
 
     def __init__(self, shape, size=None, backend=None, timeout=None, method=None, blocks=False,
-                 out_dir=None, fillet_rims=False):
+                 out_dir=None, fillet_rims=False, hex_order=1):
         self.backend = backend or find_backend()
         self.timeout = timeout_from_env() if timeout is None else float(timeout)
         self.workdir = tempfile.mkdtemp(prefix="framefix_")
@@ -87,7 +92,10 @@ class AnalysisJob:
         os.makedirs(self.out_dir, exist_ok=True)
         shape.exportBrep(self.brep_path)
         self.command = command = "blocks" if blocks else "correct" if method else "analyze"
-        self.argv = self.backend.argv + [command, self.brep_path, "--out", self.out_dir]
+        subcommand = "hexmesh" if blocks else command  # a block run meshes its blocks too
+        self.argv = self.backend.argv + [subcommand, self.brep_path, "--out", self.out_dir]
+        if blocks and hex_order != 1:
+            self.argv += ["--order", str(int(hex_order))]
         if size:
             self.argv += ["--size", repr(float(size))]
         if method:
@@ -139,6 +147,7 @@ class AnalysisJob:
                                    % BLOCKS_VTK)
             mesh["surfaces"] = self._block_cells(BLOCK_SURFACES_VTK, VTK_TRIANGLE, ("block",), report)
             mesh["edges"] = self._block_cells(BLOCK_EDGES_VTK, VTK_POLY_LINE, ("block",), report)
+            mesh["hexes"] = self._hexes(report)
             report["block_mesh"] = mesh
         filleted = os.path.join(self.out_dir, FILLETED_BREP)
         if os.path.exists(filleted):
@@ -146,8 +155,22 @@ class AnalysisJob:
                 report["filleted_brep"] = f.read()
         return report
 
-    def _block_cells(self, name, cell_type, arrays, report):
-        cells = read_cells(os.path.join(self.out_dir, name), cell_type, arrays)
+    def _hexes(self, report):
+        """The hex mesh as {"points", "cells" ((m, 8 or 20) ints), "block", "scaled_jacobian"},
+        or None when the run made none."""
+        h = report.get("hexmesh")
+        if not h or not h["done"]:
+            return None
+        cell_type = VTK_QUADRATIC_HEXAHEDRON if h["order"] == 2 else VTK_HEXAHEDRON
+        hexes = self._block_cells(HEX_VTK, cell_type, ("block",), report, ("scaled_jacobian",))
+        if len(hexes["cells"]) != h["hexes"]:
+            raise BackendError("the backend's %s has %d hexes, its report %d"
+                               % (HEX_VTK, len(hexes["cells"]), h["hexes"]))
+        hexes["cells"] = numpy.array(hexes["cells"]).reshape(len(hexes["cells"]), -1)
+        return hexes
+
+    def _block_cells(self, name, cell_type, arrays, report, floats=()):
+        cells = read_cells(os.path.join(self.out_dir, name), cell_type, arrays, floats)
         blocks = cells["block"]
         if len(blocks) and (blocks.min() < 0 or blocks.max() >= report["blocks"]["count"]):
             raise BackendError("the backend's %s names blocks its report does not have" % name)

@@ -3,6 +3,7 @@
     curves = make_analysis(part)                  # runs the backend, then adds the objects
     curves = make_analysis(part, size, report=r)  # objects from a report the panel already has
     blocks = make_blocks(part, method="snap")
+    hexes = make_hex_mesh(part, order=2)          # the blocks' hex mesh, a Fem::FemMeshObject
 
 The backend runs before anything is added, so a failed run leaves the document unchanged.
 Each change is one undoable transaction. The make layer: above the proxies (objects/) and
@@ -17,7 +18,9 @@ from .objects.block_surfaces import BlockEdges, BlockSurfaces
 from .objects.blocks import Blocks
 from .objects.feature_curves import FeatureCurves
 from .objects.filleted_part import FilletedPart
+from .objects.hex_mesh import HexMesh
 from .objects.mapped_curves import MappedCurves
+from .objects.properties import report_of
 from .objects.singular_curves import SingularCurves
 from .objects.singular_nodes import SingularNodes
 from .objects.snapped_paths import SnappedPaths
@@ -27,6 +30,7 @@ if FreeCAD.GuiUp:
     from .viewproviders.block_surfaces import ViewProviderBlockEdges, ViewProviderBlockSurfaces
     from .viewproviders.blocks import ViewProviderBlocks
     from .viewproviders.feature_curves import ViewProviderFeatureCurves
+    from .viewproviders.hex_mesh import ViewProviderHexMesh
     from .viewproviders.mapped_curves import ViewProviderMappedCurves
     from .viewproviders.singular_curves import ViewProviderSingularCurves
     from .viewproviders.singular_nodes import ViewProviderSingularNodes
@@ -37,7 +41,8 @@ if FreeCAD.GuiUp:
                       FeatureCurves: ViewProviderFeatureCurves,
                       SnappedPaths: ViewProviderSnappedPaths, Streamlines: ViewProviderStreamlines,
                       MappedCurves: ViewProviderMappedCurves, Blocks: ViewProviderBlocks,
-                      BlockSurfaces: ViewProviderBlockSurfaces, BlockEdges: ViewProviderBlockEdges}
+                      BlockSurfaces: ViewProviderBlockSurfaces, BlockEdges: ViewProviderBlockEdges,
+                      HexMesh: ViewProviderHexMesh}
 else:
     VIEW_PROVIDERS = {}
 
@@ -92,7 +97,7 @@ def _kind(method, blocks):
 
 
 def make_analysis(source, size=None, report=None, digest=None, backend=None, method="",
-                  blocks=False, fillet_rims=False):
+                  blocks=False, fillet_rims=False, hex_order=1):
     """Add the analysis group of `source` (a part, Body or Link); returns SingularCurves.
 
     `size` None (stored as Size 0) lets the backend pick it. Without `report` the backend
@@ -100,7 +105,8 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
     size, method and blocks that report was computed from. With `method` ("auto", "snap", ...), a
     correction: the curves are those after correcting, Before35 counts the 3-5 curves before.
     With `blocks` (method "auto", the default, another method, or "none"), the part cut into blocks too: a
-    Blocks object (the tets coloured by block) beside the curves. `fillet_rims`: method fillet
+    Blocks object (the tets coloured by block) beside the curves, and when the blocks could be
+    meshed a HexMesh object (hexa8, or hexa20 with `hex_order` 2). `fillet_rims`: method fillet
     (or auto's fillet try) also fillets the convex rims across a strip from each concave edge.
     """
     solid = shapes.solid_of(source)
@@ -109,8 +115,8 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
         method = method or "auto"
     if report is None:
         report = runs.run(solid, size or None, method or None, blocks, backend,
-                          fillet_rims=fillet_rims)
-        digest = runs.input_digest(solid, size, method, blocks, fillet_rims)
+                          fillet_rims=fillet_rims, hex_order=hex_order)
+        digest = runs.input_digest(solid, size, method, blocks, fillet_rims, hex_order)
     elif blocks:
         runs.remember_block_mesh(digest, report)
     doc = source.Document
@@ -121,13 +127,26 @@ def make_analysis(source, size=None, report=None, digest=None, backend=None, met
         curves, parts = _add_parts(doc, method, blocks, report)
         curves.Source, curves.Size, curves.Blocks, curves.Method = source, size, blocks, method
         curves.FilletRims = bool(fillet_rims)
+        curves.HexOrder = int(hex_order)
         runs.store(curves, report, digest)
         if curves.FilletedBrep:
             parts.append(_add_filleted(doc, source, curves))
+        if _has_hexes(report):
+            parts.append(_add_hex_mesh(doc, curves))
         group.addObjects(parts)
         _fade_source(curves, source)
         _recompute(doc, parts)
     return curves
+
+
+def _has_hexes(report):
+    return bool((report.get("hexmesh") or {}).get("done"))
+
+
+def _add_hex_mesh(doc, curves):
+    obj = _add(doc, "Fem::FemMeshObjectPython", "HexMesh", "Hex mesh", HexMesh)
+    obj.Analysis = curves
+    return obj
 
 
 def _add_filleted(doc, source, curves):
@@ -207,6 +226,8 @@ def update_analysis(curves, size, report, digest, method="", fillet_rims=False):
         runs.store(curves, report, digest)
         if curves.FilletedBrep and not _with_proxy(curves.InList, FilletedPart):
             _add_to_group(curves, _add_filleted(doc, curves.Source, curves))
+        if _has_hexes(report) and not _with_proxy(curves.InList, HexMesh):
+            _add_to_group(curves, _add_hex_mesh(doc, curves))
         for name, label, proxy in _method_objects(_methods_run(method, report)):
             if not _with_proxy(curves.InList, proxy):
                 obj = _add(doc, "Part::FeaturePython", name, label, proxy)
@@ -224,12 +245,25 @@ def _add_to_group(curves, obj):
 
 
 def make_blocks(source, size=None, method="auto", report=None, digest=None, backend=None,
-                fillet_rims=False):
+                fillet_rims=False, hex_order=1):
     """make_analysis with blocks: correct (`method`, auto by default, or none), cut into blocks; returns
     the Blocks object (its Analysis is the curves object owning the run)."""
     curves = make_analysis(source, size, report, digest, backend, method, blocks=True,
-                           fillet_rims=fillet_rims)
+                           fillet_rims=fillet_rims, hex_order=hex_order)
     return blocks_of(curves)
+
+
+def make_hex_mesh(source, size=None, method="auto", order=1, backend=None, fillet_rims=False):
+    """make_blocks, and the blocks' hex mesh: returns the HexMesh object (a Fem::FemMeshObject
+    of hexa8, or hexa20 with `order` 2). Raises FrameFixError with the reason when the blocks
+    cannot be meshed (an invalid block, a pair not face to face); the blocks stay in the document."""
+    blocks = make_blocks(source, size, method, backend=backend, fillet_rims=fillet_rims, hex_order=order)
+    found = _with_proxy(blocks.Analysis.InList, HexMesh)
+    if not found:
+        hexmesh = report_of(blocks.Analysis)["hexmesh"] or {"reason": "the backend made none"}
+        raise FrameFixError("the blocks of %s could not be meshed: %s" % (shapes.label_of(source),
+                                                                         hexmesh["reason"]))
+    return found[0]
 
 
 def _with_proxy(objects, proxy_class):

@@ -111,6 +111,7 @@ def check_report(data):
     return {"summary": summary, "curves": curves, "nodes": nodes, "feature_curves": features,
             "mesh": mesh, "correction": _correction(data.get("correction")),
             "blocks": _blocks(data.get("blocks")),
+            "hexmesh": _hexmesh(data.get("hexmesh")),
             "timings_s": data.get("timings_s") or {}, "raw": data}
 
 
@@ -176,8 +177,39 @@ def _blocks(b):
     return out
 
 
+def _hexmesh(h):
+    """The `hexmesh` section of `framefix hexmesh` (None for the other commands)."""
+    if h is None:
+        return None
+    if not isinstance(h, dict) or not isinstance(h.get("done"), bool):
+        _fail("hexmesh.done is not a boolean")
+    if not h["done"]:
+        return {"done": False, "reason": str(h.get("reason") or "no reason given")}
+    out = {"done": True, "order": h.get("order", 1)}
+    for key in ("hexes", "vertices", "inverted"):
+        if not isinstance(h.get(key), int) or h[key] < 0:
+            _fail("hexmesh.%s is not a count" % key)
+        out[key] = h[key]
+    for key in ("min_scaled_jacobian", "mean_scaled_jacobian", "share_sj_ge_0_5"):
+        if not isinstance(h.get(key), (int, float)):
+            _fail("hexmesh.%s is not a number" % key)
+        out[key] = float(h[key])
+    if out["order"] not in (1, 2):
+        _fail("hexmesh.order is not 1 or 2")
+    return out
+
+
+def hexmesh_text(h):
+    """'920 hexes, min scaled Jacobian 0.17, 0 inverted' or 'no hex mesh: <reason>'."""
+    if not h["done"]:
+        return "no hex mesh: %s" % h["reason"]
+    return "%s%s, min scaled Jacobian %.2f, %d inverted" % (
+        plural(h["hexes"], "hex"), " (20-node)" if h["order"] == 2 else "",
+        h["min_scaled_jacobian"], h["inverted"])
+
+
 def plural(n, word):
-    return "%d %s%s" % (n, word, "" if n == 1 else "s")
+    return "%d %s%s" % (n, word, "" if n == 1 else "es" if word.endswith("x") else "s")
 
 
 def blocks_text(b):
@@ -289,4 +321,6 @@ def run_text(report):
     if report.get("blocks") is not None:
         text = "%s; curves after the correction: %s" % (blocks_text(report["blocks"]), text) \
             if report["correction"] else "%s; %s" % (blocks_text(report["blocks"]), text)
+    if report.get("hexmesh") is not None:
+        text = "%s; %s" % (hexmesh_text(report["hexmesh"]), text)
     return text

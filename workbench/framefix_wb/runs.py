@@ -26,12 +26,13 @@ _KEPT_BLOCK_MESHES = 3
 _INFO = {}  # backend key -> checked info, or the BackendError it gave
 
 
-def input_digest(solid, size, method="", blocks=False, fillet_rims=False):
+def input_digest(solid, size, method="", blocks=False, fillet_rims=False, hex_order=1):
     """What a run depends on: the solid's geometry, the size (None: the backend's default),
-    the correction method ("" for an analysis), whether it cuts blocks and fillets rims."""
+    the correction method ("" for an analysis), whether it cuts blocks and fillets rims, and
+    the order of the hex mesh of the blocks."""
     digest = "%s size=%r" % (shapes.shape_digest(solid), float(size or 0.0))
     return (digest + (" method=%s" % method if method else "") + (" blocks" if blocks else "") +
-            (" rims" if fillet_rims else ""))
+            (" rims" if fillet_rims else "") + (" order=%d" % hex_order if blocks and hex_order != 1 else ""))
 
 
 def remember_block_mesh(digest, report):
@@ -104,18 +105,19 @@ def check_method(method, blocks=False, backend=None):
 
 
 def run(solid, size, method=None, blocks=False, backend=None, timeout=None, out_dir=None,
-        on_progress=None, fillet_rims=False):
+        on_progress=None, fillet_rims=False, hex_order=1):
     """The checked report of the backend on `solid`: an analysis, with `method` a correction,
-    with `blocks` a block decomposition (its tet mesh kept for the Blocks object). `size`
-    None lets the backend choose. Raises FrameFixError (BackendError when the run failed)."""
+    with `blocks` a block decomposition and its hex mesh of order `hex_order` (their meshes kept
+    for the Blocks and HexMesh objects). `size` None lets the backend choose. Raises
+    FrameFixError (BackendError when the run failed)."""
     check_method(method, blocks, backend)
-    job = AnalysisJob(solid, size, backend, timeout, method, blocks, out_dir, fillet_rims)
+    job = AnalysisJob(solid, size, backend, timeout, method, blocks, out_dir, fillet_rims, hex_order)
     try:
         report = run_sync(job, on_progress=on_progress, on_idle=gui_idle)
     finally:
         job.cleanup()
     if blocks:
-        remember_block_mesh(input_digest(solid, size, method or "", True, fillet_rims), report)
+        remember_block_mesh(input_digest(solid, size, method or "", True, fillet_rims, hex_order), report)
     return report
 
 
@@ -131,11 +133,11 @@ def refresh(curves):
     Blocks changed since (InputDigest): results applied from the panel are not run twice."""
     solid = shapes.solid_of(curves.Source)
     size = curves.Size.Value or None  # 0: the backend's default
-    rims = curves.FilletRims
-    digest = input_digest(solid, size, curves.Method, curves.Blocks, rims)
+    rims, order = curves.FilletRims, curves.HexOrder
+    digest = input_digest(solid, size, curves.Method, curves.Blocks, rims, order)
     if digest != curves.InputDigest or not curves.Report:
         report = run(solid, size, method=curves.Method or None, blocks=curves.Blocks,
-                     fillet_rims=rims)
+                     fillet_rims=rims, hex_order=order)
         store(curves, report, digest)
         FreeCAD.Console.PrintMessage("FrameFix: %s: %s\n" % (curves.Source.Label,
                                                             run_text(report)))

@@ -81,3 +81,16 @@ def blocks_legend_html(blocks):
         rows.append('<span style="color:%s">&#9632;</span> %d%s'
                     % (hexcol, b, "" if valid_flags[b] else " (invalid)"))
     return "&nbsp;".join(rows)
+
+
+# Hex mesh: each hex coloured by its smallest scaled Jacobian (1 a perfect cube, <= 0 inverted).
+HEX_QUALITY_COLORS = ((0.0, (0.90, 0.10, 0.10), "inverted"), (0.2, (1.00, 0.55, 0.00), "< 0.2"),
+                      (0.5, (0.95, 0.85, 0.20), "0.2 - 0.5"), (2.0, (0.35, 0.75, 0.35), ">= 0.5"))
+
+
+def hex_quality_color(scaled_jacobian):
+    """The colour of a hex whose smallest scaled Jacobian is `scaled_jacobian`."""
+    for bound, rgb, _ in HEX_QUALITY_COLORS:
+        if scaled_jacobian <= 0 if bound == 0.0 else scaled_jacobian < bound:
+            return rgb
+    return HEX_QUALITY_COLORS[-1][1]

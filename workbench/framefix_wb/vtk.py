@@ -12,6 +12,8 @@ from .errors import BackendError
 
 VTK_TETRA = 10
 VTK_POLY_LINE, VTK_TRIANGLE = 4, 5
+VTK_HEXAHEDRON, VTK_QUADRATIC_HEXAHEDRON = 12, 25
+_CELL_SIZES = {VTK_TRIANGLE: 3, VTK_HEXAHEDRON: 8, VTK_QUADRATIC_HEXAHEDRON: 20}  # fixed-size cells
 
 
 def _fail(path, what):
@@ -44,12 +46,14 @@ def _read_text(path):
 
 
 
-def _cell_arrays(text, start, names, count):
-    """The integer CELL_DATA arrays `names` (count values each) after offset `start`."""
+def _cell_arrays(text, start, names, count, floats=()):
+    """The CELL_DATA arrays `names` (count integers each) and `floats` (count floats each)
+    after offset `start`."""
     data = {}
-    for name in names:
+    for name in tuple(names) + tuple(floats):
         a = _header(text, r"^SCALARS %s \w+ 1\s+LOOKUP_TABLE \w+\s" % re.escape(name), start)
-        data[name] = _numbers(text, a.end(), count, float).astype(numpy.int64)
+        values = _numbers(text, a.end(), count, float)
+        data[name] = values if name in floats else values.astype(numpy.int64)
     return data
 
 
@@ -87,10 +91,10 @@ def read_tets(path, arrays=("block",)):
     return dict(data, points=points, tets=tets)
 
 
-def read_cells(path, cell_type, arrays=()):
-    """{"points": (n, 3) floats, "cells": list of int arrays, "<array>": one int per cell} of a
-    legacy ASCII UNSTRUCTURED_GRID whose cells are all of VTK type `cell_type` (triangles of 3
-    points, polylines of 2 or more)."""
+def read_cells(path, cell_type, arrays=(), floats=()):
+    """{"points": (n, 3) floats, "cells": list of int arrays, "<array>": one int (one float for
+    `floats`) per cell} of a legacy ASCII UNSTRUCTURED_GRID whose cells are all of VTK type
+    `cell_type` (triangles of 3 points, hexahedra of 8 or 20, polylines of 2 or more)."""
     text = _read_text(path)
     try:
         m = _header(text, r"^POINTS (\d+) \w+\s")
@@ -102,14 +106,14 @@ def read_cells(path, cell_type, arrays=()):
         cells, at = [], 0
         for _ in range(count):
             size = int(ints[at]) if at < total else -1
-            if size < 2 or at + 1 + size > total or (cell_type == VTK_TRIANGLE and size != 3):
+            if size < 2 or at + 1 + size > total or _CELL_SIZES.get(cell_type, size) != size:
                 _fail(path, "a cell has a bad size")
             cells.append(ints[at + 1:at + 1 + size])
             at += 1 + size
         m = _header(text, r"^CELL_TYPES (\d+)\s", m.end())
         if count and (_numbers(text, m.end(), count, numpy.int64) != cell_type).any():
             _fail(path, "cells are not all of type %d" % cell_type)
-        data = _cell_arrays(text, m.end(), arrays, count)
+        data = _cell_arrays(text, m.end(), arrays, count, floats)
     except ValueError as e:
         _fail(path, "truncated or not a legacy VTK grid (%s)" % e)
     _check_points(path, points, [int(i) for c in cells for i in (c.min(), c.max())], "cell")

@@ -3,7 +3,8 @@
 
 NOT an oracle: its curves are made up. FAKE_BACKEND_LOG (if set) gets one line per run, so
 tests can count reruns; FAKE_BACKEND_DELAY slows the progress lines down (seconds each).
-`blocks` cuts the unit cube's 6 Kuhn tets into 2 made-up blocks (block 1 invalid).
+`blocks` cuts the unit cube's 6 Kuhn tets into 2 made-up blocks (block 1 invalid); `hexmesh`
+does the same and meshes the cube as one hex.
 `info` prints INFO (the contract of the real `framefix info`); `correct` and `blocks` refuse,
 as the real backend does, every method INFO does not offer as available.
 """
@@ -90,12 +91,34 @@ def write_cells(path, cells, cell_type, block):
         f.write("\n".join(lines) + "\n")
 
 
+def write_hexmesh(report, out, order):
+    """Report section and hex.vtk: the unit cube as one hex (block 0), scaled Jacobian 1; at
+    order 2 with its 12 edge midpoints."""
+    corners = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+    edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+    points = corners + ([tuple((a + b) / 2 for a, b in zip(corners[i], corners[j])) for i, j in edges]
+                        if order == 2 else [])
+    n = len(points)
+    report["hexmesh"] = {"done": True, "hexes": 1, "vertices": n, "order": order, "size": 1.0,
+                         "min_scaled_jacobian": 1.0, "mean_scaled_jacobian": 1.0,
+                         "share_sj_ge_0_5": 1.0, "inverted": 0, "volume": 1.0, "part_volume": 1.0,
+                         "blocks": [{"counts": [1, 1, 1], "hexes": 1, "min_scaled_jacobian": 1.0}]}
+    lines = ["# vtk DataFile Version 3.0", "canned hexes", "ASCII", "DATASET UNSTRUCTURED_GRID",
+             "POINTS %d double" % n] + ["%g %g %g" % p for p in points]
+    lines += ["CELLS 1 %d" % (n + 1), " ".join(map(str, [n] + list(range(n)))),
+              "CELL_TYPES 1", "12" if order == 1 else "25", "CELL_DATA 1",
+              "SCALARS block double 1", "LOOKUP_TABLE default", "0",
+              "SCALARS scaled_jacobian double 1", "LOOKUP_TABLE default", "1"]
+    with open(os.path.join(out, "hex.vtk"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 def main(argv):
     if argv[:1] == ["info"]:
         print(json.dumps(INFO, indent=1))
         return 0
-    if len(argv) < 4 or argv[0] not in ("analyze", "correct", "blocks") or "--out" not in argv:
-        print("framefix: error [cli]: usage: framefix analyze|correct|blocks PART [--size H] "
+    if len(argv) < 4 or argv[0] not in ("analyze", "correct", "blocks", "hexmesh") or "--out" not in argv:
+        print("framefix: error [cli]: usage: framefix analyze|correct|blocks|hexmesh PART [--size H] "
               "[--method M] --out DIR", file=sys.stderr)
         return 2
     part, out = argv[1], argv[argv.index("--out") + 1]
@@ -110,12 +133,16 @@ def main(argv):
     stages = ["load", "mesh", "field", "singularities"]
     method = argv[argv.index("--method") + 1] if "--method" in argv else (
         "auto" if argv[0] != "analyze" else "")
+    hexmesh = argv[0] == "hexmesh"  # blocks, then a hex mesh of them
+    if hexmesh:
+        argv = ["blocks"] + argv[1:]
     refused = refusal(argv[0], method) if argv[0] != "analyze" else None
     if refused:
         print(refused, file=sys.stderr)
         return 2
     if argv[0] == "blocks":
         stages += ["correct", "blocks"] if method != "none" else ["blocks"]
+        stages += ["hexmesh"] if hexmesh else []
     for stage in stages:
         for fraction in (0.0, 0.5, 1.0):
             print("progress %s %.2f" % (stage, fraction), file=sys.stderr, flush=True)
@@ -155,6 +182,8 @@ def main(argv):
                                                   invalid_nodes=0, meshable=True)
     if argv[0] == "blocks":
         write_blocks(report, out)
+    if hexmesh:
+        write_hexmesh(report, out, order=int(argv[argv.index("--order") + 1]) if "--order" in argv else 1)
     with open(os.path.join(out, "report.json"), "w") as f:
         json.dump(report, f)
     return 0

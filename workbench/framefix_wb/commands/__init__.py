@@ -7,8 +7,9 @@ def register_commands():
     from .analyze import AnalyzeCommand
     from .blocks import BlocksCommand
     from .correct import CorrectCommand
+    from .hex_mesh import HexMeshCommand
     commands = [("FrameFix_Analyze", AnalyzeCommand()), ("FrameFix_Correct", CorrectCommand()),
-                ("FrameFix_Blocks", BlocksCommand())]
+                ("FrameFix_Blocks", BlocksCommand()), ("FrameFix_HexMesh", HexMeshCommand())]
     for name, command in commands:
         FreeCADGui.addCommand(name, command)
     return [name for name, _ in commands]

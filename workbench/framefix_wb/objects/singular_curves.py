@@ -32,6 +32,8 @@ class SingularCurves(ProxyBase):
         add(obj, "App::PropertyBool", "FilletRims", "FrameFix",
             "Method fillet (or auto's fillet try): also fillet the convex rim across a strip "
             "from each concave edge filleted, as the paper does for a groove")
+        add(obj, "App::PropertyInteger", "HexOrder", "FrameFix",
+            "Block runs: the hex mesh's elements, 1 hexa8 (C3D8) or 2 hexa20 (C3D20)", 0, 1)
         add(obj, "App::PropertyInteger", "Before35", "Summary",
             "3-5 curves before the correction", READ_ONLY)
         self.show_method(obj)
@@ -62,6 +64,7 @@ class SingularCurves(ProxyBase):
             obj.setEditorMode(name, (READ_ONLY if name == "Before35" else 0) if obj.Method
                               else HIDDEN)
         obj.setEditorMode("Blocks", READ_ONLY if obj.Blocks else HIDDEN)
+        obj.setEditorMode("HexOrder", 0 if obj.Blocks else HIDDEN)
 
     def onChanged(self, obj, prop):
         if prop in ("Method", "Blocks") and "Before35" in obj.PropertiesList:

@@ -6,7 +6,8 @@ import html
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from .. import paths, sizing, style
-from ..report import blocks_text, curve_breakdown, extrusion_lines, fillet_lines, tries_lines
+from ..report import (blocks_text, curve_breakdown, extrusion_lines, fillet_lines, hexmesh_text,
+                      tries_lines)
 
 
 class AnalyzeForm(QtWidgets.QWidget):
@@ -130,6 +131,9 @@ class AnalyzeForm(QtWidgets.QWidget):
             head = '<b style="color:%s">%s</b><br>%s<br>' % (
                 "#008000" if good else "#c00000", html.escape(blocks_text(blocks)),
                 style.blocks_legend_html(blocks["blocks"]))
+        hexmesh = report.get("hexmesh")
+        if hexmesh is not None:
+            head += '<b>Hex mesh:</b> %s<br>' % html.escape(hexmesh_text(hexmesh))
         self.summary.setText(head +
             "%s: %s<b>%d 3-5 curves</b>, %d singular curves in all (%s), %d nodes (%d invalid)"
             "<br>%s<br>%s" % (

@@ -176,10 +176,11 @@ class AnalyzePanel:
             solid = shapes.solid_of(self.source)
             self.size_run, self.method_run, self.rims_run = self.chosen_run()
             runs.check_method(self.method_run, self.blocks)
+            order = getattr(self.analysis, "HexOrder", 1) if _alive(self.analysis) else 1
             self.digest = runs.input_digest(solid, self.size_run, self.method_run, self.blocks,
-                                            self.rims_run)
+                                            self.rims_run, order)
             self.job = AnalysisJob(solid, self.size_run, method=self.method_run or None,
-                                   blocks=self.blocks, fillet_rims=self.rims_run)
+                                   blocks=self.blocks, fillet_rims=self.rims_run, hex_order=order)
         except (FrameFixError, ReferenceError, RuntimeError, OSError) as e:
             self._show_error(str(e))
             return False
