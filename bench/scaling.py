@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Scaling table of the whole pipeline: `framefix blocks PART --method M` at sizes giving about
-50k, 200k, 1M and 2M tets; per run the tets, the seconds of each stage and the peak memory.
+"""Scaling table of the whole pipeline: `framefix hexmesh PART --method M` at sizes giving about
+50k, 200k, 1M and 2M tets; per run the tets, the seconds of each stage, the hexes and hexes per
+second of the hex mesh stage, and the peak memory.
 
     /usr/bin/python3 bench/scaling.py [--part samples/notch.step] [--method snap] [--threads 2]
                                       [--json OUT.json]
@@ -18,11 +19,11 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 TARGETS = [50e3, 200e3, 1e6, 2e6]  # tets; the default size gives about the first
-STAGES = ["load", "mesh", "field", "singularities", "correct", "blocks"]
+STAGES = ["load", "mesh", "field", "singularities", "correct", "blocks", "hexmesh"]
 
 
 def run(binary, part, method, factor, threads, out):
-    cmd = [binary, "blocks", part, "--method", method, "--size-factor", "%.4f" % factor,
+    cmd = [binary, "hexmesh", part, "--method", method, "--size-factor", "%.4f" % factor,
            "--threads", str(threads), "--out", out, "--quiet"]
     done = subprocess.run(cmd, capture_output=True, text=True)
     if done.returncode != 0:
@@ -31,6 +32,9 @@ def run(binary, part, method, factor, threads, out):
         report = json.load(f)
     row = {"target": factor, "tets": report["mesh"]["tets"], "peak_mb": report["peak_memory_mb"]}
     row.update({s: report["timings_s"].get(s, 0.0) for s in STAGES + ["total"]})
+    hexmesh = report.get("hexmesh", {})
+    row["hexes"] = hexmesh.get("hexes", 0)
+    row["hexes_per_s"] = hexmesh.get("hexes_per_second", 0.0)
     return row
 
 
@@ -47,11 +51,11 @@ def main():
         for i, tets in enumerate(TARGETS):
             factor = (TARGETS[0] / tets) ** (1.0 / 3.0)  # tets scale as size^-3
             rows.append(run(a.binary, a.part, a.method, factor, a.threads, os.path.join(tmp, str(i))))
-    print("| tets | " + " | ".join(STAGES) + " | total s | peak MB |")
-    print("|---" * (len(STAGES) + 3) + "|")
+    print("| tets | " + " | ".join(STAGES) + " | total s | peak MB | hexes | hexes/s |")
+    print("|---" * (len(STAGES) + 5) + "|")
     for r in rows:
         print("| {:,} | ".format(r["tets"]) + " | ".join("%.2f" % r[s] for s in STAGES) +
-              " | %.1f | %.0f |" % (r["total"], r["peak_mb"]))
+              " | %.1f | %.0f | %d | %.0f |" % (r["total"], r["peak_mb"], r["hexes"], r["hexes_per_s"]))
     if a.json:
         with open(a.json, "w") as f:
             json.dump({"part": a.part, "method": a.method, "threads": a.threads, "rows": rows}, f, indent=1)

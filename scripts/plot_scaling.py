@@ -13,7 +13,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-STAGES = ["mesh", "field", "singularities", "correct", "blocks", "total"]
+STAGES = ["mesh", "field", "singularities", "correct", "blocks", "hexmesh", "total"]
 
 
 def main(src, png):
@@ -23,13 +23,13 @@ def main(src, png):
     tets = [r["tets"] for r in rows]
     fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
     for s in STAGES:
-        left.plot(tets, [max(r[s], 1e-3) for r in rows], marker="o", label=s,
+        left.plot(tets, [max(r.get(s, 0.0), 1e-3) for r in rows], marker="o", label=s,
                   linewidth=2.5 if s == "total" else 1.5)
     left.set_xscale("log")
     left.set_yscale("log")
     left.set_xlabel("tets")
     left.set_ylabel("seconds")
-    left.set_title("framefix blocks --method %s, %d threads" % (data["method"], data["threads"]))
+    left.set_title("framefix hexmesh --method %s, %d threads" % (data["method"], data["threads"]))
     left.legend(fontsize=8)
     left.grid(True, which="both", alpha=0.3)
     right.plot(tets, [r["peak_mb"] for r in rows], marker="o", color="black")

@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
-"""Runs `framefix analyze` (or `correct`) on every CAD model of a folder (such as the HexMe set)
-and prints a table of summaries and timings. Not part of ctest.
+"""Runs `framefix analyze` (or `correct`, or `hexmesh`) on every CAD model of a folder (such as
+the HexMe set) and prints a table of summaries and timings. Not part of ctest.
 
-    /usr/bin/python3 scripts/run_hexme.py --folder DIR [--command correct] [--size-factor F] [--threads N]
+    /usr/bin/python3 scripts/run_hexme.py --folder DIR [--command correct|hexmesh] [--size-factor F] [--threads N]
+
+With `hexmesh` the table has the blocks and the hex mesh: hexes, the smallest scaled Jacobian,
+inverted hexes, the volume error against the part, or why there is no hex mesh.
 """
 import argparse
 import json
@@ -14,10 +17,25 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 
 
+def hexmesh_cells(out, code):
+    """The hexmesh table's cells after model and exit code."""
+    if code != 0:
+        return ["-"] * 10
+    rep = json.loads((out / "report.json").read_text())
+    b, h = rep["blocks"], rep["hexmesh"]
+    cells = [str(rep["mesh"]["tets"]), str(rep["singularities"]["summary"]["meshable"]), str(b["count"]),
+             str(b["valid"]), f"{b['conforming_pairs']}/{b['pairs']}"]
+    if not h["done"]:
+        return cells + [f"none: {h['reason'][:60]}", "-", "-", "-", f"{h['seconds']:.2f}"]
+    error = 100 * (h["volume"] - h["part_volume"]) / h["part_volume"]
+    return cells + [str(h["hexes"]), f"{h['min_scaled_jacobian']:.2f}", str(h["inverted"]), f"{error:+.2f}",
+                    f"{h['seconds']:.2f}"]
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--folder", required=True, help="folder of .step/.stp/.brep/.iges/.igs models")
-    p.add_argument("--command", default="analyze", choices=["mesh", "analyze", "correct"])
+    p.add_argument("--command", default="analyze", choices=["mesh", "analyze", "correct", "hexmesh"])
     p.add_argument("--size-factor", default="1")
     p.add_argument("--threads", default="0", help="backend threads, 0 = all cores")
     p.add_argument("--out", default="/tmp/framefix-hexme")
@@ -25,8 +43,13 @@ def main():
     args = p.parse_args()
     binary = ROOT / "build" / "bin" / "framefix"
     models = sorted(x for x in Path(args.folder).iterdir() if x.suffix.lower() in (".step", ".stp", ".brep", ".iges", ".igs"))
-    print(f"| model | exit | tets | curves | val3 | val5 | 3-5 | invalid nodes | meshable | after 3-5 | after meshable | seconds |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    hexes = args.command == "hexmesh"
+    if hexes:
+        print("| model | exit | tets | meshable | blocks | valid | conforming pairs | hexes | min SJ | inverted | volume error % | hex s | seconds |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    else:
+        print(f"| model | exit | tets | curves | val3 | val5 | 3-5 | invalid nodes | meshable | after 3-5 | after meshable | seconds |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for m in models:
         out = Path(args.out) / m.stem
         t0 = time.time()
@@ -38,6 +61,9 @@ def main():
             code, err = "timeout", []
         dt = time.time() - t0
         row = [m.name, str(code)]
+        if hexes:
+            print("| " + " | ".join(row + hexmesh_cells(out, code) + [f"{dt:.1f}"]) + " |", flush=True)
+            continue
         if code == 0:
             rep = json.loads((out / "report.json").read_text())
             s = rep.get("singularities", {}).get("summary", {})

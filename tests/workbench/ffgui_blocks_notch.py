@@ -1,7 +1,8 @@
 """GUI with the real backend: select the notch, FrameFix_Blocks, Apply, wait; the Blocks object
 holds every tet of the run, coloured by block, as many blocks as the report; the corrected
-curves and snapped paths are shown with it. Screenshot of the whole window in
-output/gui_blocks/, copied to docs/screenshot_blocks.png when FRAMEFIX_UPDATE_DOCS is set."""
+curves and snapped paths are shown with it; the Hex mesh object holds the report's hexes, each
+coloured by quality. Screenshots of the whole window in output/gui_blocks/, copied to
+docs/screenshot_blocks.png and docs/screenshot_hexmesh.png when FRAMEFIX_UPDATE_DOCS is set."""
 import os
 import shutil
 
@@ -14,10 +15,12 @@ from ffworkbench_testing import notch_document
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(ffgui_harness.__file__))))
 DOCS_SHOT = os.path.join(REPO, "docs", "screenshot_blocks.png")
+DOCS_HEX_SHOT = os.path.join(REPO, "docs", "screenshot_hexmesh.png")
 
 
 def scenario(h):
     from framefix_wb import make
+    from framefix_wb.objects.hex_mesh import HexMesh
     from framefix_wb.objects.properties import report_of
     from framefix_wb.objects.snapped_paths import SnappedPaths
     from framefix_wb.taskpanels.analyze_panel import AnalyzePanel
@@ -62,6 +65,14 @@ def scenario(h):
     h.check(curves.Curves35 == 0, "the corrected curves have no 3-5 curve")
     paths = [o for o in curves.InList if isinstance(getattr(o, "Proxy", None), SnappedPaths)]
     h.check(len(paths) == 1 and len(paths[0].Shape.Edges) > 0, "snapped paths shown")
+    hexes = [o for o in curves.InList if isinstance(getattr(o, "Proxy", None), HexMesh)]
+    h.check(len(hexes) == 1, "one Hex mesh object")
+    if hexes:
+        n = report["hexmesh"]["hexes"]
+        h.check(hexes[0].FemMesh.HexaCount == n > 0, "the Hex mesh holds the report's %d hexes: %d"
+                % (n, hexes[0].FemMesh.HexaCount))
+        h.check(hexes[0].ViewObject.Proxy.coloured == n, "every hex coloured by quality")
+        h.check("Hex mesh:" in panel.form.summary.text(), "the panel shows the hex mesh")
     h.button(QtWidgets.QDialogButtonBox.Ok).click()
     yield h.until(lambda: AnalyzePanel.active is None, 10, "OK to close the panel")
     FreeCADGui.Selection.clearSelection()
@@ -77,6 +88,18 @@ def scenario(h):
     h.check(os.path.getsize(shot) > 10000, "screenshot " + shot)
     if os.environ.get("FRAMEFIX_UPDATE_DOCS"):  # tests never write the sources unless asked
         shutil.copyfile(shot, DOCS_SHOT)
+    if hexes:  # the hex mesh alone, with its edges, beside the tree
+        shown = [o for o in doc.Objects if o.ViewObject.Visibility]
+        for o in shown:
+            o.ViewObject.Visibility = False
+        hexes[0].ViewObject.Visibility = True
+        yield 1.0
+        shot = h.screenshot("hexmesh_notch")
+        h.check(os.path.getsize(shot) > 10000, "screenshot " + shot)
+        if os.environ.get("FRAMEFIX_UPDATE_DOCS"):
+            shutil.copyfile(shot, DOCS_HEX_SHOT)
+        for o in shown:
+            o.ViewObject.Visibility = True
 
     # The same part again from the existing analysis: the command takes its part.
     FreeCADGui.Selection.addSelection(curves)

@@ -23,24 +23,22 @@ std::array<Eigen::Vector3d, 8> corners_of(const HexMesh& m, const std::array<int
     return p;
 }
 
+// The hexes of each block grid; HexBlockStats' scaled Jacobians come in measure().
 void add_hexes(const HexGrid& g, const BlockComplex& cx, HexMesh& out) {
     for (size_t b = 0; b < g.block_ids.size(); ++b) {
         const HexGrid::BlockGrid& bg = g.block_ids[b];
         HexBlockStats stats;
         stats.counts = bg.n;
-        stats.min_scaled_jacobian = 1;
         for (int k = 0; k < bg.n[2]; ++k)
             for (int j = 0; j < bg.n[1]; ++j)
                 for (int i = 0; i < bg.n[0]; ++i) {
                     out.hexes.push_back(hex_of(bg, i, j, k));
-                    out.hex_block.push_back(cx.blocks[b].id);
-                    const double sj = hex_scaled_jacobian(corners_of(out, out.hexes.back()));
-                    out.scaled_jacobian.push_back(sj);
+                    out.hex_block.push_back(int(b));
                     stats.hexes += 1;
-                    stats.min_scaled_jacobian = std::min(stats.min_scaled_jacobian, sj);
                 }
         out.blocks.push_back(stats);
     }
+    for (int& b : out.hex_block) b = cx.blocks[size_t(b)].id;
 }
 
 // Each boundary face's grid quads, turned outward, with the B-rep face under each.
@@ -106,12 +104,19 @@ void add_midpoints(const TetMesh& mesh, const BlockComplex& cx, const HexGrid& g
     for (size_t i = 0; i < extra.size(); ++i) out.points.row(Eigen::Index(nv + i)) = extra[i].transpose();
 }
 
-void measure(HexMesh& out) {
+// Scaled Jacobians per hex and per block, and the mesh's quality figures. `block_of`: the
+// complex block (index into out.blocks) of each hex.
+void measure(const std::vector<int>& block_of, HexMesh& out) {
     HexQuality& q = out.quality;
-    q.min_scaled_jacobian = out.scaled_jacobian.empty() ? 0 : 1;
+    q.min_scaled_jacobian = out.hexes.empty() ? 0 : 1;
+    for (HexBlockStats& b : out.blocks) b.min_scaled_jacobian = 1;
     int good = 0;
+    out.scaled_jacobian.clear();
     for (size_t h = 0; h < out.hexes.size(); ++h) {
-        const double sj = out.scaled_jacobian[h];
+        const double sj = hex_scaled_jacobian(corners_of(out, out.hexes[h]));
+        out.scaled_jacobian.push_back(sj);
+        HexBlockStats& b = out.blocks[size_t(block_of[h])];
+        b.min_scaled_jacobian = std::min(b.min_scaled_jacobian, sj);
         q.min_scaled_jacobian = std::min(q.min_scaled_jacobian, sj);
         q.mean_scaled_jacobian += sj / double(out.hexes.size());
         good += sj >= 0.5;
@@ -137,12 +142,14 @@ HexMesh build_hexmesh(const TetMesh& mesh, const BlockDecomposition& blocks, con
         out.edge_classes = assign_edge_counts(cx, size, options.layers);
         out.size = size;
         HexGrid g = hex_grid(mesh, cx, cad);
-        smooth_hex_grid(options.smoothing_rounds, g);
         out.points.resize(Eigen::Index(g.points.size()), 3);
         for (size_t i = 0; i < g.points.size(); ++i) out.points.row(Eigen::Index(i)) = g.points[i].transpose();
         add_hexes(g, cx, out);
         add_boundary_quads(mesh, cx, g, out);
-        measure(out);
+        smooth_hex_mesh(options.smoothing_rounds, out);
+        std::vector<int> block_of;
+        for (size_t b = 0; b < out.blocks.size(); ++b) block_of.insert(block_of.end(), size_t(out.blocks[b].hexes), int(b));
+        measure(block_of, out);
         if (options.order == 2) add_midpoints(mesh, cx, g, cad, out);
         out.done = true;
     } catch (const Error& e) {

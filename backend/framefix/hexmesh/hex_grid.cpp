@@ -83,7 +83,6 @@ HexGrid::FaceGrid face_grid(const ComplexFace& f, const EdgeLookup& edges, HexGr
                                            (1 - u) * v * P(top[0]) + u * v * P(top[fg.ns]));
             at(s, t) = int(g.points.size());
             g.points.push_back(coons);
-            g.on_face.push_back(1);
         }
     return fg;
 }
@@ -141,7 +140,6 @@ HexGrid::BlockGrid block_grid(const BlockComplex& cx, const ComplexBlock& blk, H
             for (int i = 1; i < bg.n[0]; ++i) {
                 cell(i, j, k) = int(g.points.size());
                 g.points.emplace_back(Eigen::Vector3d::Zero());
-                g.on_face.push_back(0);
             }
     for (int k = 1; k < bg.n[2]; ++k)
         for (int j = 1; j < bg.n[1]; ++j)
@@ -196,7 +194,6 @@ HexGrid hex_grid(const TetMesh& mesh, const BlockComplex& cx, const CadProjector
         Eigen::Vector3d p = project_corner(mesh, cx.corners[c], locator, cad);
         if (p == cx.corners[c].position && face_of_corner[c] >= 0) p = onto[size_t(face_of_corner[c])]->project(p, cad);
         g.points.push_back(p);
-        g.on_face.push_back(1);
     }
     for (const ComplexEdge& e : cx.edges) {
         const EdgeSupport support = edge_support(mesh, e, locator);
@@ -210,7 +207,6 @@ HexGrid hex_grid(const TetMesh& mesh, const BlockComplex& cx, const CadProjector
             g.points.push_back(support.kind != EdgeSupport::curve && face != face_of_edge.end()
                                    ? onto[size_t(face->second)]->project(p, cad)
                                    : project_on_support(p, support, cad));
-            g.on_face.push_back(1);
         }
         ids.push_back(e.b);
         g.edge_ids.push_back(std::move(ids));

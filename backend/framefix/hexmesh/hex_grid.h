@@ -21,7 +21,6 @@ struct HexGrid {
         int at(int i, int j, int k) const { return ids[(k * (n[1] + 1) + j) * (n[0] + 1) + i]; }
     };
     std::vector<BlockGrid> block_ids;         // per complex block
-    std::vector<char> on_face;                // per point: on a complex face (fixed by the smoothing)
 };
 
 // Hex counts of the complex's edges (ComplexEdge::count): opposite edges of a block are one
@@ -33,9 +32,10 @@ int assign_edge_counts(BlockComplex& cx, double& size, int layers);
 // `cad`, onto the B-rep), then each block's interior by transfinite interpolation.
 HexGrid hex_grid(const TetMesh& mesh, const BlockComplex& cx, const CadProjector& cad);
 
-// Guarded Laplacian rounds on block-interior vertices: a move is kept only when it does not
-// lower the smallest scaled Jacobian of the hexes around the vertex.
-void smooth_hex_grid(int rounds, HexGrid& grid);
+// Guarded Laplacian rounds on every vertex off the part's boundary (block interiors, interfaces
+// and interior block edges alike): a vertex moves to the mean of its hex-edge neighbours, and
+// the move is kept only when it does not lower the smallest scaled Jacobian of its hexes.
+void smooth_hex_mesh(int rounds, HexMesh& mesh);
 
 // The 8 corners of hex (i, j, k) of block grid `g`, in VTK order.
 std::array<int, 8> hex_of(const HexGrid::BlockGrid& g, int i, int j, int k);

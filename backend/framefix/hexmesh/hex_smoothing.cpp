@@ -6,40 +6,50 @@ namespace framefix {
 
 namespace {
 
-// Smallest scaled Jacobian of the 8 hexes around interior vertex (i, j, k).
-double worst_around(const HexGrid& g, const HexGrid::BlockGrid& b, int i, int j, int k) {
+constexpr int kHexEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+double worst_of(const HexMesh& m, const std::vector<int>& hexes) {
     double worst = 1;
-    for (int dk = -1; dk <= 0; ++dk)
-        for (int dj = -1; dj <= 0; ++dj)
-            for (int di = -1; di <= 0; ++di) {
-                const std::array<int, 8> h = hex_of(b, i + di, j + dj, k + dk);
-                std::array<Eigen::Vector3d, 8> p;
-                for (int c = 0; c < 8; ++c) p[c] = g.points[size_t(h[c])];
-                worst = std::min(worst, hex_scaled_jacobian(p));
-            }
+    for (int h : hexes) {
+        std::array<Eigen::Vector3d, 8> p;
+        for (int c = 0; c < 8; ++c) p[c] = m.points.row(m.hexes[size_t(h)][c]).transpose();
+        worst = std::min(worst, hex_scaled_jacobian(p));
+    }
     return worst;
 }
 
 }  // namespace
 
-void smooth_hex_grid(int rounds, HexGrid& g) {
+void smooth_hex_mesh(int rounds, HexMesh& m) {
+    const int nv = int(m.points.rows());
+    std::vector<char> fixed(static_cast<size_t>(nv), 0);
+    for (const auto& q : m.boundary_quads)
+        for (int v : q) fixed[size_t(v)] = 1;
+    std::vector<std::vector<int>> nb(static_cast<size_t>(nv)), around(static_cast<size_t>(nv));
+    for (size_t h = 0; h < m.hexes.size(); ++h) {
+        const auto& x = m.hexes[h];
+        for (int c = 0; c < 8; ++c) around[size_t(x[c])].push_back(int(h));
+        for (const auto& e : kHexEdges) nb[size_t(x[e[0]])].push_back(x[e[1]]), nb[size_t(x[e[1]])].push_back(x[e[0]]);
+    }
+    for (auto& n : nb) {
+        std::sort(n.begin(), n.end());
+        n.erase(std::unique(n.begin(), n.end()), n.end());
+    }
     for (int round = 0; round < rounds; ++round) {
         int moved = 0;
-        for (const HexGrid::BlockGrid& b : g.block_ids)
-            for (int k = 1; k < b.n[2]; ++k)
-                for (int j = 1; j < b.n[1]; ++j)
-                    for (int i = 1; i < b.n[0]; ++i) {
-                        Eigen::Vector3d& x = g.points[size_t(b.at(i, j, k))];
-                        const Eigen::Vector3d mean = (g.points[size_t(b.at(i - 1, j, k))] + g.points[size_t(b.at(i + 1, j, k))] +
-                                                      g.points[size_t(b.at(i, j - 1, k))] + g.points[size_t(b.at(i, j + 1, k))] +
-                                                      g.points[size_t(b.at(i, j, k - 1))] + g.points[size_t(b.at(i, j, k + 1))]) / 6;
-                        if ((mean - x).squaredNorm() == 0) continue;
-                        const double before = worst_around(g, b, i, j, k);
-                        const Eigen::Vector3d old = x;
-                        x = mean;
-                        if (worst_around(g, b, i, j, k) < before) x = old;
-                        else ++moved;
-                    }
+        for (int v = 0; v < nv; ++v) {
+            if (fixed[size_t(v)] || nb[size_t(v)].empty()) continue;
+            Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+            for (int w : nb[size_t(v)]) mean += m.points.row(w).transpose();
+            mean /= double(nb[size_t(v)].size());
+            const Eigen::Vector3d old = m.points.row(v).transpose();
+            if ((mean - old).squaredNorm() == 0) continue;
+            const double before = worst_of(m, around[size_t(v)]);
+            m.points.row(v) = mean.transpose();
+            if (worst_of(m, around[size_t(v)]) < before) m.points.row(v) = old.transpose();
+            else ++moved;
+        }
         if (!moved) break;
     }
 }

@@ -20,7 +20,7 @@ namespace framefix {
 struct HexMeshOptions {
     double size = 0;         // target hex edge length, model units; 0 = kDefaultHexSizeInH x tet h
     int layers = 0;          // > 0: the shortest edge class gets this many hexes (overrides size)
-    int smoothing_rounds = 30;  // guarded Laplacian rounds on block-interior vertices
+    int smoothing_rounds = 30;  // guarded Laplacian rounds on the vertices off the part's boundary
     int order = 1;           // 1: 8-node hexes, 2: also the 12 edge midpoints (20-node)
 };
 
