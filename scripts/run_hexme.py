@@ -2,7 +2,7 @@
 """Runs `framefix analyze` (or `correct`, or `hexmesh`) on every CAD model of a folder (such as
 the HexMe set) and prints a table of summaries and timings. Not part of ctest.
 
-    /usr/bin/python3 scripts/run_hexme.py --folder DIR [--command correct|hexmesh] [--size-factor F] [--threads N]
+    /usr/bin/python3 scripts/run_hexme.py --folder DIR [--command correct|hexmesh] [--method M] [--size-factor F] [--threads N]
 
 With `hexmesh` the table has the blocks and the hex mesh: hexes, the smallest scaled Jacobian,
 inverted hexes, the volume error against the part, or why there is no hex mesh.
@@ -36,6 +36,7 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("--folder", required=True, help="folder of .step/.stp/.brep/.iges/.igs models")
     p.add_argument("--command", default="analyze", choices=["mesh", "analyze", "correct", "hexmesh"])
+    p.add_argument("--method", default=None, help="correction method of correct/hexmesh (default: the backend's)")
     p.add_argument("--size-factor", default="1")
     p.add_argument("--threads", default="0", help="backend threads, 0 = all cores")
     p.add_argument("--out", default="/tmp/framefix-hexme")
@@ -55,7 +56,8 @@ def main():
         t0 = time.time()
         try:
             r = subprocess.run([str(binary), args.command, str(m), "--out", str(out), "--quiet",
-                                "--size-factor", args.size_factor, "--threads", args.threads], capture_output=True, text=True, timeout=args.timeout)
+                                "--size-factor", args.size_factor, "--threads", args.threads]
+                               + (["--method", args.method] if args.method else []), capture_output=True, text=True, timeout=args.timeout)
             code, err = r.returncode, r.stderr.strip().splitlines()[-1:] if r.stderr.strip() else []
         except subprocess.TimeoutExpired:
             code, err = "timeout", []

@@ -5,7 +5,7 @@ import subprocess
 
 import pytest
 
-from conftest import SAMPLES, TESTDATA, progress_stages, run
+from conftest import SAMPLES, progress_stages, run
 
 
 def vtk_cells(path):
@@ -136,3 +136,18 @@ def test_notch_hex_mesh_runs_a_calculix_static_analysis(tmp_path):
     assert len(disp) == r["hexmesh"]["vertices"]
     assert max(abs(disp[i][2]) for i in face_where(lambda z: abs(z - zmin) < 1e-6)[1]) == 0
     assert all(disp[i][2] < 0 for i in top_ids)
+
+
+@pytest.mark.skipif(not shutil.which("gmsh"), reason="gmsh is not installed")
+def test_a_tet_mesh_input_gets_a_hex_mesh_on_its_own_boundary(tmp_path):
+    # No B-rep: the boundary vertices go onto the tet mesh's boundary triangles (the cube's
+    # planes, so the hexes are exact).
+    msh = tmp_path / "cube.msh"
+    subprocess.run(["gmsh", str(SAMPLES / "cube.step"), "-3", "-nt", "1", "-clmax", "0.08", "-format", "msh4",
+                    "-o", str(msh), "-v", "1"], check=True, timeout=300)
+    code, _, err = run("hexmesh", msh, "--out", tmp_path / "out", "--quiet")
+    assert code == 0, err
+    h = json.loads((tmp_path / "out" / "report.json").read_text())["hexmesh"]
+    assert h["done"] and h["inverted"] == 0
+    assert h["min_scaled_jacobian"] == pytest.approx(1, abs=1e-6)
+    assert h["volume"] == pytest.approx(h["part_volume"], rel=1e-9)

@@ -1,6 +1,8 @@
 #include "framefix/hexmesh/hex_projection.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 
 #include <Eigen/Geometry>
@@ -97,22 +99,51 @@ FaceProjector::FaceProjector(const TetMesh& mesh, const ComplexFace& face, const
             tris_.push_back({mesh.points.row(t[0]).transpose(), mesh.points.row(t[1]).transpose(), mesh.points.row(t[2]).transpose()});
             tags_.push_back(tag);
         }
+    Points centroids(Eigen::Index(tris_.size()), 3);
+    double edges = 0;
+    for (size_t i = 0; i < tris_.size(); ++i) {
+        const Eigen::Vector3d c = (tris_[i][0] + tris_[i][1] + tris_[i][2]) / 3;
+        centroids.row(Eigen::Index(i)) = c.transpose();
+        for (int k = 0; k < 3; ++k) reach_ = std::max(reach_, (tris_[i][k] - c).norm()), edges += (tris_[i][k] - tris_[i][(k + 1) % 3]).norm();
+    }
+    if (tris_.empty()) return;
+    // Two mean triangle edges, coarser when the grid would have more than 8 cells per triangle
+    // (a curved face's box is mostly empty): all faces' grids live at once.
+    const Eigen::Vector3d ext = centroids.colwise().maxCoeff() - centroids.colwise().minCoeff();
+    cell_ = std::max({2 * edges / (3 * double(tris_.size())), std::cbrt(ext.prod() / (8 * double(tris_.size()))), 1e-12});
+    centroids_.emplace(centroids, cell_);
+}
+
+// The triangle closest to p, and the closest point q on it: within a radius that doubles until
+// a triangle lies inside it (every triangle within r has its centroid within r + reach_).
+int FaceProjector::nearest_triangle(const Eigen::Vector3d& p, Eigen::Vector3d& q) const {
+    std::vector<int> near;
+    for (double r = cell_; centroids_; r *= 2) {
+        near.clear();
+        centroids_->within(p, r + reach_, near);
+        const bool all = near.size() == tris_.size();  // then the closest of them is the answer
+        double best = all ? std::numeric_limits<double>::infinity() : r * r;
+        int found = -1;
+        for (int i : near) {
+            const Eigen::Vector3d x = closest_on_triangle(p, tris_[size_t(i)][0], tris_[size_t(i)][1], tris_[size_t(i)][2]);
+            const double d = (x - p).squaredNorm();
+            if (d < best || (d == best && found >= 0 && i < found)) best = d, q = x, found = i;
+        }
+        if (found >= 0 || all) return found;
+    }
+    return -1;
 }
 
 Eigen::Vector3d FaceProjector::project(const Eigen::Vector3d& p, const CadProjector& cad, int* tag,
                                        Eigen::Vector3d* normal) const {
-    double best = 1e300;
     Eigen::Vector3d q = p;
-    int best_tag = 0;
-    size_t nearest = 0;
-    for (size_t i = 0; i < tris_.size(); ++i) {
-        const Eigen::Vector3d x = closest_on_triangle(p, tris_[i][0], tris_[i][1], tris_[i][2]);
-        const double d = (x - p).squaredNorm();
-        if (d < best) best = d, q = x, best_tag = tags_[i], nearest = i;
-    }
+    const int nearest = nearest_triangle(p, q);
+    const int best_tag = nearest >= 0 ? tags_[size_t(nearest)] : 0;
     if (tag) *tag = best_tag;
-    if (normal && !tris_.empty())
-        *normal = (tris_[nearest][1] - tris_[nearest][0]).cross(tris_[nearest][2] - tris_[nearest][0]).normalized();
+    if (normal && nearest >= 0) {
+        const auto& t = tris_[size_t(nearest)];
+        *normal = (t[1] - t[0]).cross(t[2] - t[0]).normalized();
+    }
     if (boundary_ && best_tag > 0 && cad.to_face) return cad.to_face(best_tag, q);
     return q;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Putting hex vertices on the part (internal to hexmesh): onto a block face's tet triangles,
 // then onto the B-rep face or edge under them.
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "framefix/hexmesh/block_structure.h"
 #include "framefix/hexmesh/hexmesh.h"
 #include "framefix/mesh/keys.h"
+#include "framefix/streamlines/point_grid.h"
 
 namespace framefix {
 
@@ -36,8 +38,8 @@ Eigen::Vector3d project_on_support(const Eigen::Vector3d& p, const EdgeSupport& 
 Eigen::Vector3d project_corner(const TetMesh& mesh, const ComplexCorner& corner, const SurfaceLocator& at,
                                const CadProjector& cad);
 
-// Closest point on a complex face's triangles; on the boundary, then onto the B-rep face of the
-// closest triangle.
+// Closest point on a complex face's triangles (a grid of their centroids: a face of a large part
+// has 10^4-10^5 of them); on the boundary, then onto the B-rep face of the closest triangle.
 class FaceProjector {
 public:
     FaceProjector(const TetMesh& mesh, const ComplexFace& face, const SurfaceLocator& at);
@@ -50,6 +52,9 @@ private:
     std::vector<std::array<Eigen::Vector3d, 3>> tris_;
     std::vector<int> tags_;
     bool boundary_;
+    std::optional<PointGrid> centroids_;
+    double cell_ = 0, reach_ = 0;  // grid spacing; largest centroid-to-corner distance
+    int nearest_triangle(const Eigen::Vector3d& p, Eigen::Vector3d& q) const;
 };
 
 }  // namespace framefix
