@@ -93,6 +93,9 @@ def scenario(h):
         for o in shown:
             o.ViewObject.Visibility = False
         hexes[0].ViewObject.Visibility = True
+        view.setCameraOrientation(FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 180).multiply(
+            view.getCameraOrientation()))  # the pocket faces the camera
+        FreeCADGui.SendMsgToActiveView("ViewFit")
         yield 1.0
         shot = h.screenshot("hexmesh_notch")
         h.check(os.path.getsize(shot) > 10000, "screenshot " + shot)
