@@ -69,6 +69,8 @@ struct BlockInfo {
 struct BlockPair {                 // two blocks that share boundary
     int a = -1, b = -1;            // block ids, a < b
     bool conforming = false;       // exactly one shared face on each side, corners matching
+    bool one_face = false;         // one shared face with 4 corners on each side (conforming but for
+                                   // the corner positions, which may be further apart than the tolerance)
     std::string reason;            // why not
 };
 

@@ -340,6 +340,7 @@ std::vector<BlockPair> check_conformity(const std::vector<BlockFaces>& faces, do
                             worst = std::max(worst, d);
                         }
                     }
+                    pair.one_face = true;
                     pair.conforming = worst <= tolerance;
                     if (!pair.conforming) pair.reason = "corner mismatch " + std::to_string(worst);
                 }

@@ -14,12 +14,17 @@ namespace framefix {
 
 namespace {
 
-std::string first_failure(const BlockDecomposition& d) {
+// The first block or pair that cannot be meshed. A pair that shares one face with 4 corners on
+// each side is meshed even when its corners lie further apart than the blocks' tolerance: the
+// complex checks that both sides name the same corners (counted in `off_tolerance`).
+std::string first_failure(const BlockDecomposition& d, int& off_tolerance) {
     for (int b = 0; b < d.count; ++b)
         if (!d.blocks[b].valid) return "block " + std::to_string(b) + " is not a hexahedron (" + d.blocks[b].reason + ")";
-    for (const BlockPair& p : d.neighbour_pairs)
-        if (!p.conforming)
+    for (const BlockPair& p : d.neighbour_pairs) {
+        off_tolerance += !p.conforming && p.one_face;
+        if (!p.conforming && !p.one_face)
             return "blocks " + std::to_string(p.a) + " and " + std::to_string(p.b) + " do not share one whole face (" + p.reason + ")";
+    }
     if (int(d.faces.size()) != d.count || int(d.boundary.size()) != d.count) return "the decomposition carries no block faces";
     return "";
 }
@@ -208,7 +213,7 @@ std::array<int, 4> face_local_corners(int lf) {
 
 BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& d) {
     BlockComplex cx;
-    cx.failure = first_failure(d);
+    cx.failure = first_failure(d, cx.off_tolerance_pairs);
     if (!cx.failure.empty()) return cx;
     const std::vector<std::vector<int>> global = merge_corners(mesh, d, cx);
     std::map<std::pair<int, int>, int> edge_of, face_of_pair;

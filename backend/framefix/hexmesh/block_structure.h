@@ -43,6 +43,7 @@ struct BlockComplex {
     std::vector<ComplexFace> faces;
     std::vector<ComplexBlock> blocks;
     std::string failure;           // empty when the decomposition forms a complex of cubes
+    int off_tolerance_pairs = 0;   // pairs meshed although their corners were off the blocks' tolerance
 };
 
 BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& blocks);

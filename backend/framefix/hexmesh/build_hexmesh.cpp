@@ -126,6 +126,39 @@ void measure(const std::vector<int>& block_of, HexMesh& out) {
     q.share_sj_ge_0_5 = out.hexes.empty() ? 0 : double(good) / double(out.hexes.size());
 }
 
+// The hex mesh, or done = false with the reason.
+HexMesh mesh_blocks(const TetMesh& mesh, const BlockDecomposition& blocks, const HexMeshOptions& options,
+                    const CadProjector& cad) {
+    HexMesh out;
+    BlockComplex cx = block_complex(mesh, blocks);
+    if (!cx.failure.empty()) {
+        out.reason = cx.failure;
+        return out;
+    }
+    double size = options.size > 0 ? options.size : kDefaultHexSizeInH * blocks.h;
+    out.edge_classes = assign_edge_counts(cx, size, options.layers);
+    out.size = size;
+    HexGrid g = hex_grid(mesh, cx, cad);
+    out.points.resize(Eigen::Index(g.points.size()), 3);
+    for (size_t i = 0; i < g.points.size(); ++i) out.points.row(Eigen::Index(i)) = g.points[i].transpose();
+    add_hexes(g, cx, out);
+    add_boundary_quads(mesh, cx, g, out);
+    smooth_hex_mesh(options.smoothing_rounds, out);
+    std::vector<int> block_of;
+    for (size_t b = 0; b < out.blocks.size(); ++b) block_of.insert(block_of.end(), size_t(out.blocks[b].hexes), int(b));
+    measure(block_of, out);
+    out.off_tolerance_pairs = cx.off_tolerance_pairs;
+    if (cx.off_tolerance_pairs > 0 && out.quality.inverted > 0) {
+        HexMesh none;
+        none.reason = std::to_string(out.quality.inverted) + " hexes came out inverted where " +
+                      std::to_string(cx.off_tolerance_pairs) + " block pair(s) meet with their corners apart";
+        return none;
+    }
+    if (options.order == 2) add_midpoints(mesh, cx, g, cad, out);
+    out.done = true;
+    return out;
+}
+
 }  // namespace
 
 HexMesh build_hexmesh(const TetMesh& mesh, const BlockDecomposition& blocks, const HexMeshOptions& options,
@@ -133,25 +166,7 @@ HexMesh build_hexmesh(const TetMesh& mesh, const BlockDecomposition& blocks, con
     const auto t0 = std::chrono::steady_clock::now();
     HexMesh out;
     try {
-        BlockComplex cx = block_complex(mesh, blocks);
-        if (!cx.failure.empty()) {
-            out.reason = cx.failure;
-            return out;
-        }
-        double size = options.size > 0 ? options.size : kDefaultHexSizeInH * blocks.h;
-        out.edge_classes = assign_edge_counts(cx, size, options.layers);
-        out.size = size;
-        HexGrid g = hex_grid(mesh, cx, cad);
-        out.points.resize(Eigen::Index(g.points.size()), 3);
-        for (size_t i = 0; i < g.points.size(); ++i) out.points.row(Eigen::Index(i)) = g.points[i].transpose();
-        add_hexes(g, cx, out);
-        add_boundary_quads(mesh, cx, g, out);
-        smooth_hex_mesh(options.smoothing_rounds, out);
-        std::vector<int> block_of;
-        for (size_t b = 0; b < out.blocks.size(); ++b) block_of.insert(block_of.end(), size_t(out.blocks[b].hexes), int(b));
-        measure(block_of, out);
-        if (options.order == 2) add_midpoints(mesh, cx, g, cad, out);
-        out.done = true;
+        out = mesh_blocks(mesh, blocks, options, cad);
     } catch (const Error& e) {
         out = HexMesh{};
         out.reason = e.message();

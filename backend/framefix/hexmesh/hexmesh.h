@@ -63,6 +63,9 @@ struct HexMesh {
     double size = 0;               // hex edge length aimed at, model units
     double part_volume = 0;        // the solid's volume (the tets' for a mesh input), model units^3
     int edge_classes = 0;          // groups of block edges that share one count
+    // Neighbour pairs whose shared face matched by its corners although they lay further apart
+    // than the blocks' conformity tolerance. Such a mesh is kept only without inverted hexes.
+    int off_tolerance_pairs = 0;
     double seconds = 0;
 };
 

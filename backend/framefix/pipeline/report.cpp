@@ -190,6 +190,7 @@ json hexmesh_json(const HexMesh& h) {
             {"order", h.midpoints.empty() ? 1 : 2},
             {"size", h.size},
             {"edge_classes", h.edge_classes},
+            {"off_tolerance_pairs", h.off_tolerance_pairs},
             {"min_scaled_jacobian", q.min_scaled_jacobian},
             {"mean_scaled_jacobian", q.mean_scaled_jacobian},
             {"share_sj_ge_0_5", q.share_sj_ge_0_5},

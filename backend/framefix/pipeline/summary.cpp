@@ -53,8 +53,8 @@ std::string human_summary(const RunResult& r) {
     }
     if (const auto& hex = r.hexmesh) {
         char q[96];
-        std::snprintf(q, sizeof q, "; %zu hexes, min scaled Jacobian %.2f, %d inverted", hex->hexes.size(),
-                      hex->quality.min_scaled_jacobian, hex->quality.inverted);
+        std::snprintf(q, sizeof q, "; %zu hex%s, min scaled Jacobian %.2f, %d inverted", hex->hexes.size(),
+                      hex->hexes.size() == 1 ? "" : "es", hex->quality.min_scaled_jacobian, hex->quality.inverted);
         s += hex->done ? std::string(q) : "; no hex mesh: " + hex->reason;
     }
     if (r.mesh && r.mesh->attempts.size() > 1)

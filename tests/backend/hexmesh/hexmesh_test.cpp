@@ -158,6 +158,20 @@ TEST(HexMesh, OrderTwoPutsEdgeMidpointsOnThePart) {
     EXPECT_LE(worst, 1e-4 * diagonal);
 }
 
+TEST(HexMesh, PairsWhoseCornersAreOffTheBlocksToleranceAreStillMeshedFaceToFace) {
+    // With a conformity tolerance far below h every notch pair fails the blocks' corner test,
+    // yet each shares one face with the same 4 corners: the hex mesh is the same sound mesh.
+    RunOptions options;
+    options.stop_after = Stage::hexmesh;
+    options.blocks.conform_tolerance = 1e-6;
+    const RunResult r = framefix::run(RunInput::file(sample("notch")), options);
+    ASSERT_TRUE(r.blocks && r.hexmesh);
+    EXPECT_EQ(r.blocks->conforming_pairs, 0);
+    EXPECT_EQ(r.hexmesh->off_tolerance_pairs, r.blocks->pairs);
+    expect_sound(r, "notch, tolerance 1e-6 h");
+    EXPECT_EQ(r.hexmesh->hexes.size(), run("notch", 1).hexmesh->hexes.size());
+}
+
 TEST(HexMesh, BlocksThatAreNoHexahedraAreAReasonNotACrash) {
     const RunResult& r = run("two_cylinders", 1);
     ASSERT_TRUE(r.blocks && r.hexmesh);
