@@ -30,8 +30,11 @@ SurfaceLocator::SurfaceLocator(const TetMesh& mesh) : face_tag(mesh.num_vertices
         for (int k = 0; k < 3; ++k) face_tag[mesh.boundary_faces(b, k)] = tag;
         triangle_tag[triangle_key(mesh.boundary_faces(b, 0), mesh.boundary_faces(b, 1), mesh.boundary_faces(b, 2))] = tag;
     }
-    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
+    stride = std::uint64_t(mesh.num_vertices());
+    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e) {
         for (int k = 0; k < 2; ++k) edge_tag[mesh.feature_edges(e, k)] = mesh.edge_tags[e];
+        segment_tag[edge_key(mesh.feature_edges(e, 0), mesh.feature_edges(e, 1), stride)] = mesh.edge_tags[e];
+    }
 }
 
 EdgeSupport edge_support(const TetMesh& mesh, const ComplexEdge& edge, const SurfaceLocator& at) {
@@ -46,10 +49,11 @@ EdgeSupport edge_support(const TetMesh& mesh, const ComplexEdge& edge, const Sur
         on_boundary += at.face_tag[v] > 0;
         faces.push_back(at.face_tag[v]);
         if (i + 1 == n) continue;
-        // A segment on a feature curve: both ends carry the curve's tag (a B-rep vertex carries one of its curves').
-        const int w = edge.chain[size_t(i + 1)];
-        const int tag = at.edge_tag[v] > 0 && at.edge_tag[v] == at.edge_tag[w] ? at.edge_tag[v] : std::max(at.edge_tag[v], at.edge_tag[w]);
-        on_curve += at.edge_tag[v] > 0 && at.edge_tag[w] > 0;
+        // The segment's own B-rep edge: at a B-rep vertex the per-vertex tag names just one of
+        // its curves (an imprint ending on the edge pulled points onto the imprint).
+        const auto it = at.segment_tag.find(edge_key(v, edge.chain[size_t(i + 1)], at.stride));
+        const int tag = it == at.segment_tag.end() ? 0 : it->second;
+        on_curve += tag > 0;
         curves.push_back(tag);
     }
     if (n >= 2 && 2 * on_curve >= n - 1) s.kind = EdgeSupport::curve, s.tags = curves;

@@ -15,10 +15,13 @@
 namespace framefix {
 
 // Per mesh vertex: a B-rep face tag of a boundary triangle at it (0 inside) and a B-rep edge tag
-// of a feature edge at it (0 off the feature curves); per boundary triangle its face tag.
+// of a feature edge at it (0 off the feature curves; a B-rep vertex has several, this is one);
+// per boundary triangle its face tag; per feature mesh edge its B-rep edge.
 struct SurfaceLocator {
     std::vector<int> face_tag, edge_tag;
     std::unordered_map<TriangleKey, int, TriangleKeyHash> triangle_tag;
+    std::unordered_map<PairKey, int> segment_tag;
+    std::uint64_t stride = 0;      // the vertex count, for edge_key
     explicit SurfaceLocator(const TetMesh& mesh);
 };
 
