@@ -153,12 +153,13 @@ std::vector<int> edge_chain(const TetMesh& mesh, const std::vector<BoundaryTrian
             nb[a].push_back(b), nb[b].push_back(a);
         }
     if (nb.empty()) return {};
-    auto nearest = [&](const Eigen::Vector3d& x) {
+    auto nearest = [&](const Eigen::Vector3d& x) {  // the lowest id on ties: deterministic
         int best = -1;
-        for (const auto& [v, w] : nb)
-            if (best < 0 || (mesh.points.row(v).transpose() - x).squaredNorm() < (mesh.points.row(best).transpose() - x).squaredNorm() ||
-                ((mesh.points.row(v).transpose() - x).squaredNorm() == (mesh.points.row(best).transpose() - x).squaredNorm() && v < best))
-                best = v;
+        double closest = 0;
+        for (const auto& [v, w] : nb) {
+            const double d = (mesh.points.row(v).transpose() - x).squaredNorm();
+            if (best < 0 || d < closest || (d == closest && v < best)) best = v, closest = d;
+        }
         return best;
     };
     const int source = nearest(f.corner_position[ca]), target = nearest(f.corner_position[cb]);
@@ -209,6 +210,83 @@ std::array<int, 4> face_local_corners(int lf) {
     return out;
 }
 
+
+// What block_complex needs of one block while it adds the block's edges and faces.
+struct BlockInput {
+    int id;
+    const BlockFaces& faces;
+    const std::vector<BoundaryTriangle>& boundary;
+    std::array<int, 8> corner;                // local corner -> the block's own corner index
+    std::array<std::array<int, 2>, 3> axis;   // per axis: its start and end faces (patches)
+};
+
+// The block's 12 edges, each new one with its chain; false (and cx.failure) when one has none.
+bool add_edges(const TetMesh& mesh, const BlockInput& in, std::map<std::pair<int, int>, int>& edge_of,
+               ComplexBlock& blk, BlockComplex& cx) {
+    for (int e = 0; e < 12; ++e) {
+        const int dir = e / 4, r = e % 4;  // r: the other two indices, lowest axis first
+        const int lo = std::min((dir + 1) % 3, (dir + 2) % 3), hi = std::max((dir + 1) % 3, (dir + 2) % 3);
+        int ijk0[3], ijk1[3];
+        ijk0[dir] = 0, ijk1[dir] = 1;
+        ijk0[lo] = ijk1[lo] = r & 1, ijk0[hi] = ijk1[hi] = r >> 1;
+        const int l0 = local_corner(ijk0[0], ijk0[1], ijk0[2]), l1 = local_corner(ijk1[0], ijk1[1], ijk1[2]);
+        const auto key = std::minmax(blk.corners[l0], blk.corners[l1]);
+        auto [it, fresh] = edge_of.try_emplace({key.first, key.second}, int(cx.edges.size()));
+        blk.edges[e] = it->second;
+        if (!fresh) continue;
+        ComplexEdge edge;
+        edge.a = key.first, edge.b = key.second;
+        const bool forward = blk.corners[l0] == edge.a;
+        edge.chain = edge_chain(mesh, in.boundary, in.faces, in.axis[lo][r & 1], in.axis[hi][r >> 1],
+                                in.corner[forward ? l0 : l1], in.corner[forward ? l1 : l0]);
+        if (edge.chain.empty()) {
+            cx.failure = "block " + std::to_string(in.id) + " has an edge with no mesh edges along it";
+            return false;
+        }
+        edge.polyline = edge_polyline(mesh, cx, edge.a, edge.b, edge.chain);
+        cx.edges.push_back(std::move(edge));
+    }
+    return true;
+}
+
+// The tet triangles of one patch, turned outward from the block.
+std::vector<Eigen::Vector3i> patch_triangles(const TetMesh& mesh, const BlockInput& in, int patch) {
+    std::vector<Eigen::Vector3i> out;
+    for (size_t t = 0; t < in.boundary.size(); ++t) {
+        if (in.faces.patch[t] != patch) continue;
+        Eigen::Vector3i v = in.boundary[t].verts;
+        const Eigen::Vector3d p0 = mesh.points.row(v[0]).transpose();
+        const Eigen::Vector3d n = (mesh.points.row(v[1]).transpose() - p0).cross(mesh.points.row(v[2]).transpose() - p0);
+        if (n.dot(in.boundary[t].normal) < 0) std::swap(v[1], v[2]);
+        out.push_back(v);
+    }
+    return out;
+}
+
+// The block's 6 faces; an interface seen before must have the same corners (else cx.failure).
+bool add_faces(const TetMesh& mesh, const BlockInput& in, std::map<std::pair<int, int>, int>& face_of_pair,
+               ComplexBlock& blk, BlockComplex& cx) {
+    for (int lf = 0; lf < 6; ++lf) {
+        const int patch = in.axis[lf / 2][lf % 2], across = in.faces.label[patch];
+        std::array<int, 4> corners{};
+        const std::array<int, 4> local = face_local_corners(lf);
+        for (int n = 0; n < 4; ++n) corners[n] = blk.corners[local[n]];
+        int id = int(cx.faces.size());
+        if (across >= 0) id = face_of_pair.try_emplace(std::minmax(in.id, across), id).first->second;
+        blk.faces[lf] = id;
+        if (id < int(cx.faces.size())) {  // the other block's side of this interface
+            std::array<int, 4> mine = corners, theirs = cx.faces[id].corners;
+            std::sort(mine.begin(), mine.end()), std::sort(theirs.begin(), theirs.end());
+            if (mine == theirs) continue;
+            cx.failure = "blocks " + std::to_string(in.id) + " and " + std::to_string(across) +
+                         " see their shared face with different corners";
+            return false;
+        }
+        cx.faces.push_back({corners, patch_triangles(mesh, in, patch), across < 0});
+    }
+    return true;
+}
+
 }  // namespace
 
 BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& d) {
@@ -218,83 +296,21 @@ BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& d) {
     const std::vector<std::vector<int>> global = merge_corners(mesh, d, cx);
     std::map<std::pair<int, int>, int> edge_of, face_of_pair;
     for (int b = 0; b < d.count; ++b) {
-        const BlockFaces& f = d.faces[b];
-        std::array<int, 8> corner{};
-        std::array<std::array<int, 2>, 3> axis{};
-        if (!cube_frame(f, global[b], corner, axis)) {
+        BlockInput in{b, d.faces[b], d.boundary[b], {}, {}};
+        if (!cube_frame(in.faces, global[b], in.corner, in.axis)) {
             cx.failure = "block " + std::to_string(b) + "'s faces and corners do not form a cube";
             return cx;
         }
         ComplexBlock blk;
         blk.id = b;
-        for (int i = 0; i < 8; ++i) blk.corners[i] = global[b][corner[i]];
-        for (int i = 0; i < 8; ++i)
-            for (int k = i + 1; k < 8; ++k)
-                if (blk.corners[i] == blk.corners[k]) {
-                    cx.failure = "block " + std::to_string(b) + " meets itself at a corner";
-                    return cx;
-                }
-        for (int e = 0; e < 12; ++e) {
-            const int dir = e / 4, r = e % 4;           // r = the other two indices, lowest axis first
-            const int o1 = (dir + 1) % 3, o2 = (dir + 2) % 3;
-            const int lo = std::min(o1, o2), hi = std::max(o1, o2);
-            int ijk0[3], ijk1[3];
-            ijk0[dir] = 0, ijk1[dir] = 1;
-            ijk0[lo] = ijk1[lo] = r & 1, ijk0[hi] = ijk1[hi] = r >> 1;
-            const int l0 = local_corner(ijk0[0], ijk0[1], ijk0[2]), l1 = local_corner(ijk1[0], ijk1[1], ijk1[2]);
-            const int ga = blk.corners[l0], gb = blk.corners[l1];
-            const auto key = std::minmax(ga, gb);
-            auto [it, fresh] = edge_of.try_emplace({key.first, key.second}, int(cx.edges.size()));
-            if (fresh) {
-                ComplexEdge edge;
-                edge.a = key.first, edge.b = key.second;
-                const bool forward = ga == edge.a;
-                edge.chain = edge_chain(mesh, d.boundary[b], f, axis[lo][r & 1], axis[hi][r >> 1], forward ? corner[l0] : corner[l1],
-                                        forward ? corner[l1] : corner[l0]);
-                if (edge.chain.empty()) {
-                    cx.failure = "block " + std::to_string(b) + " has an edge with no mesh edges along it";
-                    return cx;
-                }
-                edge.polyline = edge_polyline(mesh, cx, edge.a, edge.b, edge.chain);
-                cx.edges.push_back(std::move(edge));
-            }
-            blk.edges[e] = it->second;
+        for (int i = 0; i < 8; ++i) blk.corners[i] = global[b][in.corner[i]];
+        std::array<int, 8> sorted = blk.corners;
+        std::sort(sorted.begin(), sorted.end());
+        if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+            cx.failure = "block " + std::to_string(b) + " meets itself at a corner";
+            return cx;
         }
-        for (int lf = 0; lf < 6; ++lf) {
-            const int patch = axis[lf / 2][lf % 2];
-            const int across = f.label[patch];
-            std::array<int, 4> corners{};
-            const std::array<int, 4> local = face_local_corners(lf);
-            for (int n = 0; n < 4; ++n) corners[n] = blk.corners[local[n]];
-            int id = int(cx.faces.size());
-            if (across >= 0) {
-                auto [it, fresh] = face_of_pair.try_emplace(std::minmax(b, across), id);
-                id = it->second;
-                if (!fresh) {
-                    std::array<int, 4> mine = corners, theirs = cx.faces[id].corners;
-                    std::sort(mine.begin(), mine.end()), std::sort(theirs.begin(), theirs.end());
-                    if (mine != theirs) {
-                        cx.failure = "blocks " + std::to_string(b) + " and " + std::to_string(across) + " see their shared face with different corners";
-                        return cx;
-                    }
-                }
-            }
-            if (id == int(cx.faces.size())) {
-                ComplexFace face;
-                face.corners = corners;
-                face.boundary = across < 0;
-                for (size_t t = 0; t < d.boundary[b].size(); ++t) {
-                    if (f.patch[t] != patch) continue;
-                    Eigen::Vector3i v = d.boundary[b][t].verts;  // turned outward from block b
-                    const Eigen::Vector3d p0 = mesh.points.row(v[0]).transpose();
-                    const Eigen::Vector3d n = (mesh.points.row(v[1]).transpose() - p0).cross(mesh.points.row(v[2]).transpose() - p0);
-                    if (n.dot(d.boundary[b][t].normal) < 0) std::swap(v[1], v[2]);
-                    face.triangles.push_back(v);
-                }
-                cx.faces.push_back(std::move(face));
-            }
-            blk.faces[lf] = id;
-        }
+        if (!add_edges(mesh, in, edge_of, blk, cx) || !add_faces(mesh, in, face_of_pair, blk, cx)) return cx;
         cx.blocks.push_back(blk);
     }
     return cx;
