@@ -13,9 +13,6 @@ namespace framefix {
 
 namespace {
 
-// C3D20's edges after its 8 corners, as pairs of VTK corners.
-constexpr int kQuadraticEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                        {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
 std::array<Eigen::Vector3d, 8> corners_of(const HexMesh& m, const std::array<int, 8>& h) {
     std::array<Eigen::Vector3d, 8> p;
@@ -83,7 +80,7 @@ void add_midpoints(const TetMesh& mesh, const BlockComplex& cx, const HexGrid& g
     };
     for (const auto& h : out.hexes) {
         std::array<int, 12> m{};
-        for (int e = 0; e < 12; ++e) m[e] = midpoint(h[kQuadraticEdges[e][0]], h[kQuadraticEdges[e][1]]);
+        for (int e = 0; e < 12; ++e) m[e] = midpoint(h[kHexEdges[e][0]], h[kHexEdges[e][1]]);
         out.midpoints.push_back(m);
     }
     for (size_t q = 0; q < out.boundary_quads.size(); ++q)

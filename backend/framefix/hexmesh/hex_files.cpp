@@ -16,7 +16,6 @@ constexpr int kMshHex8 = 5, kMshHex20 = 17;
 // gmsh's 20-node hex lists its edges in this order; ours (C3D20, VTK) is 01 12 23 30 45 56 67 74 04 15 26 37.
 constexpr int kMshEdgeFromOurs[12] = {0, 3, 8, 1, 9, 2, 10, 11, 4, 7, 5, 6};
 constexpr int kQuadEdges[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-constexpr int kOurEdgeEnds[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
 
 std::ofstream open_for_writing(const std::string& path) {
     std::ofstream out(path);
@@ -91,7 +90,7 @@ void write_hex_inp(const HexMesh& m, const std::string& path) {
     std::map<std::pair<int, int>, int> mid;  // hex edge -> its midpoint, for the face node sets
     for (size_t h = 0; h < m.midpoints.size(); ++h)
         for (int e = 0; e < 12; ++e)
-            mid[std::minmax(m.hexes[h][kOurEdgeEnds[e][0]], m.hexes[h][kOurEdgeEnds[e][1]])] = m.midpoints[h][e];
+            mid[std::minmax(m.hexes[h][kHexEdges[e][0]], m.hexes[h][kHexEdges[e][1]])] = m.midpoints[h][e];
     std::map<int, std::set<int>> on_face;
     for (size_t q = 0; q < m.boundary_quads.size(); ++q) {
         if (m.quad_face[q] <= 0) continue;

@@ -6,9 +6,6 @@ namespace framefix {
 
 namespace {
 
-constexpr int kHexEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
-                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-
 double worst_of(const HexMesh& m, const std::vector<int>& hexes) {
     double worst = 1;
     for (int h : hexes) {

@@ -74,6 +74,11 @@ struct HexMesh {
 HexMesh build_hexmesh(const TetMesh& mesh, const BlockDecomposition& blocks, const HexMeshOptions& options,
                       const CadProjector& cad = {});
 
+// The 12 edges of a hex as pairs of its VTK corners, in C3D20's (and VTK_QUADRATIC_HEXAHEDRON's)
+// order of edge midpoints.
+constexpr int kHexEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                  {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
 // Minimum scaled Jacobian over the 8 corners of a hex in VTK order (1 for a cube, <= 0 inverted).
 double hex_scaled_jacobian(const std::array<Eigen::Vector3d, 8>& p);
 // Volume of the trilinear hex (2-point Gauss, exact for the trilinear map).
