@@ -1,6 +1,6 @@
-"""HexMesh: the hex mesh of a block run (`framefix hexmesh`) as a Fem::FemMeshObjectPython that
-FreeCAD's FEM workbench meshes nothing more for: hexa8 volumes (hexa20 when the run's HexOrder
-is 2), ready for a CalculiX analysis. ScaledJacobians holds each hex's smallest scaled Jacobian;
+"""HexMesh: the hex mesh of a block run (`framefix hexmesh`) as a Fem::FemMeshObjectPython:
+hexa8 volumes (hexa20 when the run's HexOrder is 2), which a FEM analysis with CalculiX takes as
+it is. ScaledJacobians holds each hex's smallest scaled Jacobian;
 the view provider colours the hexes by it. Like Blocks, the mesh of a new run comes from
 runs.block_mesh() in the recompute after it and is saved with the document (MeshDigest). A run
 whose blocks could not be meshed leaves the mesh empty and says why in Summary.
