@@ -65,15 +65,20 @@ def _check_points(path, points, indices, what):
         _fail(path, "a point is not finite")
 
 
+def _points_and_cells(text):
+    """The (n, 3) points, and the match of the CELLS header (count, total) after them."""
+    m = _header(text, r"^POINTS (\d+) \w+\s")
+    n = int(m.group(1))
+    points = _numbers(text, m.end(), 3 * n, float).reshape(n, 3)
+    return points, _header(text, r"^CELLS (\d+) (\d+)\s", m.end())
+
+
 def read_tets(path, arrays=("block",)):
     """{"points": (n, 3) float array, "tets": (m, 4) int array, "<array>": m ints} of a legacy
     ASCII UNSTRUCTURED_GRID of tets with integer CELL_DATA `arrays`."""
     text = _read_text(path)
     try:
-        m = _header(text, r"^POINTS (\d+) \w+\s")
-        n = int(m.group(1))
-        points = _numbers(text, m.end(), 3 * n, float).reshape(n, 3)
-        m = _header(text, r"^CELLS (\d+) (\d+)\s", m.end())
+        points, m = _points_and_cells(text)
         cells, total = int(m.group(1)), int(m.group(2))
         if total != 5 * cells:
             _fail(path, "cells are not all tets")
@@ -97,10 +102,7 @@ def read_cells(path, cell_type, arrays=(), floats=()):
     `cell_type` (triangles of 3 points, hexahedra of 8 or 20, polylines of 2 or more)."""
     text = _read_text(path)
     try:
-        m = _header(text, r"^POINTS (\d+) \w+\s")
-        n = int(m.group(1))
-        points = _numbers(text, m.end(), 3 * n, float).reshape(n, 3)
-        m = _header(text, r"^CELLS (\d+) (\d+)\s", m.end())
+        points, m = _points_and_cells(text)
         count, total = int(m.group(1)), int(m.group(2))
         ints = _numbers(text, m.end(), total, numpy.int64)
         cells, at = [], 0
