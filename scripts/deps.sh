@@ -9,7 +9,7 @@ PACKAGES=(
   libeigen3-dev libtet1.5-dev libsuitesparse-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
   nlohmann-json3-dev libcli11-dev libgtest-dev
-  freecad xvfb xauth gmsh calculix-ccx
+  freecad xvfb xauth gmsh libgmsh-dev calculix-ccx
 )
 
 missing=()

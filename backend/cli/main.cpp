@@ -27,6 +27,7 @@ struct Args {
     bool fillet_rims = false;
     double hex_size = 0;
     int layers = 0, order = 1;
+    std::string mesher = "tetgen";
     std::string method = framefix::correction_methods()[0].name;
 };
 
@@ -37,6 +38,7 @@ void add_common(CLI::App* cmd, Args& a) {
     cmd->add_option("--size-factor", a.size_factor, "multiply the default size by F")->check(CLI::PositiveNumber);
     cmd->add_option("--out", a.out, "output folder (default: framefix-out)");
     cmd->add_option("--threads", a.threads, "threads (default: all cores)")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--mesher", a.mesher, "volume mesher: tetgen (default) or hxt (gmsh's parallel HXT)");
     cmd->add_flag("--quiet", a.quiet, "no progress lines");
 }
 
@@ -60,6 +62,7 @@ framefix::RunOptions options_from(const Args& a, framefix::Stage stop_after) {
     o.hexmesh.layers = a.layers;
     o.hexmesh.order = a.order;
     o.mesh.size = a.size;
+    o.mesh.mesher = framefix::mesher_named(a.mesher);
     o.size_factor = a.size_factor;
     o.threads = a.threads;
     if (!a.quiet)

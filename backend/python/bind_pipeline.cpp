@@ -23,8 +23,9 @@ Stage stage_named(const std::string& name) {
 struct HexArgs { double size = 0; int layers = 0, order = 1; };
 
 RunOptions make_options(const std::string& stop_after, const std::string& method, double size, double size_factor,
-                        int threads, double budget_s, bool fillet_rims, const HexArgs& hex) {
+                        int threads, double budget_s, bool fillet_rims, const HexArgs& hex, const std::string& mesher) {
     RunOptions o;
+    o.mesh.mesher = mesher_named(mesher);
     o.hexmesh.size = hex.size;
     o.hexmesh.layers = hex.layers;
     o.hexmesh.order = hex.order;
@@ -190,25 +191,27 @@ void bind_pipeline(py::module_& m) {
     m.def(
         "run_file",
         [](const std::string& path, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order) {
+           double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order,
+           const std::string& mesher) {
             return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
-                                                         HexArgs{hex_size, layers, order}));
+                                                         HexArgs{hex_size, layers, order}, mesher));
         },
         py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
         py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
-        py::call_guard<py::gil_scoped_release>());
+        py::arg("mesher") = "tetgen", py::call_guard<py::gil_scoped_release>());
     m.def(
         "run_shape",
         [](const BrepModel& shape, const std::string& stop_after, const std::string& method, double size,
-           double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order) {
+           double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order,
+           const std::string& mesher) {
             return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
-                                                         HexArgs{hex_size, layers, order}));
+                                                         HexArgs{hex_size, layers, order}, mesher));
         },
         py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
         py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
-        py::call_guard<py::gil_scoped_release>());
+        py::arg("mesher") = "tetgen", py::call_guard<py::gil_scoped_release>());
     m.def("info_json", &info_json, "`framefix info`: defaults and correction methods, as JSON text");
 }
 

@@ -89,12 +89,17 @@ void default_crash_signals() {
 
 std::string hint(const IsolatedTask& task) { return task.hint.empty() ? "" : "; " + task.hint; }
 
-std::string outcome(const IsolatedTask& task, const std::string& message, int status) {
+// A signal, an exit code other than 0, or no answer at all, as an Error.
+void check_exit(const IsolatedTask& task, int status, bool answered) {
     if (WIFSIGNALED(status))
         throw Error(task.stage, task.what + " crashed (" + strsignal(WTERMSIG(status)) + ")" + hint(task));
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || message.empty())
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !answered)
         throw Error(task.stage, task.what + " stopped unexpectedly (exit code " +
                                     std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")" + hint(task));
+}
+
+std::string outcome(const IsolatedTask& task, const std::string& message, int status) {
+    check_exit(task, status, !message.empty());
     switch (message[0]) {
         case kResult: return message.substr(1);
         case kError: {
@@ -106,11 +111,61 @@ std::string outcome(const IsolatedTask& task, const std::string& message, int st
     }
 }
 
+// Reads the child's pipe until it closes, waits for the child, and kills it past the deadline.
+// Returns the bytes and the wait status.
+std::pair<std::string, int> collect(const IsolatedTask& task, pid_t pid, int fd) {
+    std::string message;
+    std::optional<Clock::time_point> deadline;
+    if (task.timeout_s > 0)
+        deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(task.timeout_s));
+    const bool finished = read_all(fd, message, deadline);
+    ::close(fd);
+    if (!finished) ::kill(pid, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (!finished)
+        throw Error(task.stage, task.what + " did not finish within " + seconds(task.timeout_s) + hint(task));
+    return {std::move(message), status};
+}
+
+// Exit code of a child whose exec failed (the shell's "command not found").
+constexpr int kCannotExec = 127;
+
 }  // namespace
 
 bool isolation_enabled() {
     const char* v = std::getenv("FRAMEFIX_ISOLATION");
     return !(v && std::strcmp(v, "0") == 0);
+}
+
+std::string run_program(const IsolatedTask& task, const std::string& program, const std::vector<std::string>& args) {
+    std::vector<std::string> all = {program};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    std::fflush(nullptr);
+    int fds[2];
+    if (::pipe(fds) != 0) throw Error(task.stage, std::string("cannot create a pipe: ") + std::strerror(errno));
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(fds[0]);
+        ::close(fds[1]);
+        throw Error(task.stage, std::string("cannot start ") + program + ": " + std::strerror(errno));
+    }
+    if (pid == 0) {
+        ::dup2(fds[1], STDOUT_FILENO);
+        ::close(fds[0]);
+        ::close(fds[1]);
+        ::execv(program.c_str(), argv.data());
+        ::_exit(kCannotExec);
+    }
+    ::close(fds[1]);
+    const auto [output, status] = collect(task, pid, fds[0]);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == kCannotExec) throw Error(task.stage, "cannot run " + program + hint(task));
+    check_exit(task, status, true);
+    return output;
 }
 
 std::string run_isolated(const IsolatedTask& task, const std::function<std::string()>& work) {
@@ -132,18 +187,7 @@ std::string run_isolated(const IsolatedTask& task, const std::function<std::stri
         child(fds[1], work);
     }
     ::close(fds[1]);
-    std::string message;
-    std::optional<Clock::time_point> deadline;
-    if (task.timeout_s > 0)
-        deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(task.timeout_s));
-    const bool finished = read_all(fds[0], message, deadline);
-    ::close(fds[0]);
-    if (!finished) ::kill(pid, SIGKILL);
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (!finished)
-        throw Error(task.stage, task.what + " did not finish within " + seconds(task.timeout_s) + hint(task));
+    const auto [message, status] = collect(task, pid, fds[0]);
     return outcome(task, message, status);
 }
 

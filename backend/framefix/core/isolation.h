@@ -6,6 +6,7 @@
 // and TetGen has none; the child's copy-on-write memory makes the start cheap.
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace framefix {
 
@@ -23,6 +24,13 @@ struct IsolatedTask {
 // hint; so does a child that runs past task.timeout_s, which is killed.
 // With isolation off (see isolation_enabled) work() runs in this process.
 std::string run_isolated(const IsolatedTask& task, const std::function<std::string()>& work);
+
+// Runs `program` with `args` in a new process and returns what it wrote to its standard output.
+// For libraries that cannot run in a forked copy of this process: gmsh's OpenMP hangs in a child
+// forked after this process used OpenMP (libgomp's thread pool does not survive fork()). A
+// signal, a timeout (task.timeout_s) or an exit code other than 0 become Error as above; a
+// program that cannot be started too.
+std::string run_program(const IsolatedTask& task, const std::string& program, const std::vector<std::string>& args);
 
 // False when the environment sets FRAMEFIX_ISOLATION=0 (to debug the third-party call in gdb,
 // or to measure what the isolation costs).

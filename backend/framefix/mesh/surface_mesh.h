@@ -18,6 +18,10 @@ struct SurfaceMesh {
     Eigen::VectorXi corner_points;  // #C point index of B-rep vertex i+1
 };
 
+// The volume mesher: TetGen (the default), or gmsh's HXT through libgmsh (hxt/hxt_tetrahedralize.h).
+enum class Mesher : char { tetgen, hxt };
+inline const char* mesher_name(Mesher m) { return m == Mesher::hxt ? "hxt" : "tetgen"; }
+
 // Options of the meshing stage (tessellate + tetrahedralize).
 struct MeshOptions {
     double size = 0;            // target edge length h in model units; 0 = about target_tets tets
@@ -29,6 +33,8 @@ struct MeshOptions {
     // A size coarser than the default coarsens only faces wide enough for it: narrower ones keep
     // 2.5 edges across, or the default size (pipeline/mesh_attempts.cpp).
     bool keep_narrow_faces = true;
+    Mesher mesher = Mesher::tetgen;
+    int threads = 0;            // HXT's threads, 0 = all cores (TetGen is serial)
 };
 
 }  // namespace framefix

@@ -41,10 +41,12 @@ MeshStage remesh(const BrepModel& model, const RunOptions& options, double h, st
     MeshOptions mo = options.mesh;
     mo.size = h;
     mo.face_size = std::move(face_size);
+    if (mo.threads == 0) mo.threads = options.threads;
     BrepMeshing meshing = mesh_brep(model, m.features, mo);
     m.tets = std::move(meshing.tets);
     m.attempts = std::move(meshing.attempts);
     m.narrow_faces = meshing.narrow_faces;
+    m.mesher = mesher_name(meshing.mesher);
     m.topology = build_topology(m.tets);
     return m;
 }

@@ -2,8 +2,10 @@
 
 #include <array>
 #include <cstdio>
+#include <optional>
 
 #include "framefix/core/error.h"
+#include "framefix/hxt/hxt_tetrahedralize.h"
 #include "framefix/tetgen/tetrahedralize.h"
 
 namespace framefix {
@@ -95,15 +97,31 @@ struct SurfaceCache {
     SurfaceMesh surface;
 };
 
-TetgenRun attempt(const BrepModel& model, const FeatureSet& features, const MeshOptions& options, const Plan& p,
-                  SurfaceCache& cache) {
+const SurfaceMesh& surface_for(const BrepModel& model, const FeatureSet& features, const MeshOptions& options,
+                               const Plan& p, SurfaceCache& cache) {
     if (cache.factor != p.surface_factor) {
         MeshOptions surface_options = options;
         surface_options.size = options.size * p.surface_factor;
         cache.surface = tessellate(model, features, surface_options);
         cache.factor = p.surface_factor;
     }
-    return try_tetrahedralize(cache.surface, options, p.keep_boundary);
+    return cache.surface;
+}
+
+TetgenRun attempt(const BrepModel& model, const FeatureSet& features, const MeshOptions& options, const Plan& p,
+                  SurfaceCache& cache) {
+    return try_tetrahedralize(surface_for(model, features, options, p, cache), options, p.keep_boundary);
+}
+
+// --mesher hxt: HXT on the surface at h. When it fails, the TetGen plans follow on the same
+// surface; the report's attempts say why HXT did not mesh.
+std::optional<TetMesh> try_hxt_first(const BrepModel& model, const FeatureSet& features, const MeshOptions& options,
+                                     SurfaceCache& cache, std::vector<MeshAttempt>& attempts) {
+    const Plan& first = kPlans.front();
+    TetgenRun run = try_hxt(surface_for(model, features, options, first, cache), options);
+    attempts.push_back({"HXT, " + describe(first), run.message});
+    if (run.status == TetgenStatus::meshed) return std::move(run.mesh);
+    return std::nullopt;
 }
 
 std::string final_message(const std::vector<MeshAttempt>& attempts, bool solid_sound) {
@@ -123,6 +141,13 @@ BrepMeshing mesh_brep(const BrepModel& model, const FeatureSet& features, const 
     TetgenStatus first = TetgenStatus::meshed;
     bool solid_sound = false;
     SurfaceCache cache;
+    if (options.mesher == Mesher::hxt) {
+        if (std::optional<TetMesh> tets = try_hxt_first(model, features, options, cache, result.attempts)) {
+            result.tets = std::move(*tets);
+            result.mesher = Mesher::hxt;
+            return result;
+        }
+    }
     for (const Plan& p : kPlans) {
         if (first != TetgenStatus::meshed && !plan_helps(p, first)) continue;
         TetgenRun run;

@@ -2,7 +2,8 @@
 // Meshing a B-rep solid, tried again another way when TetGen fails: a crash or a failed boundary
 // recovery first lets TetGen split boundary triangles, then refines the surface; a
 // self-intersecting surface triangulation is first checked against the solid itself (a solid
-// that crosses itself is the user's to repair), then refined. Each try is recorded for report.json.
+// that crosses itself is the user's to repair), then refined. With --mesher hxt, gmsh's HXT
+// tries first and TetGen's ways follow if it fails. Each try is recorded for report.json.
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ struct BrepMeshing {
     TetMesh tets;
     std::vector<MeshAttempt> attempts;  // in order; the last one meshed
     int narrow_faces = 0;               // faces meshed finer than the size (MeshOptions::keep_narrow_faces)
+    Mesher mesher = Mesher::tetgen;     // the one that made the tets (HXT falls back to TetGen)
 };
 
 // Throws framefix::Error (stage "mesh") when every attempt fails, naming the first failure.

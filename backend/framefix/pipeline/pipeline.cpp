@@ -59,10 +59,12 @@ MeshStage mesh(const RunResult& r, std::optional<TetMesh> tets, const RunOptions
         m.features = classify_features(*r.model, o.features);
         MeshOptions mo = o.mesh;
         if (mo.size <= 0) mo.size = default_size(*r.model, mo.target_tets) * o.size_factor;
+        if (mo.threads == 0) mo.threads = o.threads;
         BrepMeshing meshing = mesh_brep(*r.model, m.features, mo);
         m.tets = std::move(meshing.tets);
         m.attempts = std::move(meshing.attempts);
         m.narrow_faces = meshing.narrow_faces;
+        m.mesher = mesher_name(meshing.mesher);
     }
     m.topology = build_topology(m.tets);
     report(o.progress, "mesh", 1.0);
@@ -120,6 +122,12 @@ const char* stage_name(Stage stage) {
         case Stage::hexmesh: return "hexmesh";
     }
     return "?";
+}
+
+Mesher mesher_named(const std::string& name) {
+    for (Mesher m : {Mesher::tetgen, Mesher::hxt})
+        if (name == mesher_name(m)) return m;
+    throw Error("options", "unknown mesher '" + name + "'; use tetgen (the default) or hxt (gmsh's HXT)");
 }
 
 RunInput RunInput::file(std::string path) { return {std::move(path), nullptr}; }

@@ -40,6 +40,9 @@ struct RunResult {
 // Kind of an input file from its extension; throws framefix::Error("load") when unknown.
 std::string input_kind(const std::string& path);
 
+// "tetgen" or "hxt" (--mesher); anything else is an options error naming both.
+Mesher mesher_named(const std::string& name);
+
 // Runs the stages up to options.stop_after. Options are checked before any work: an unknown
 // or unavailable correction method throws framefix::Error("correct") at once. A tet-mesh input
 // has no B-rep: load reads it, mesh finds its crease features.

@@ -234,6 +234,7 @@ std::string report_json(const RunResult& r) {
                      {"mean_edge", mean_edge_length(m, r.mesh->topology)}};
         if (!r.mesh->attempts.empty()) j["mesh"]["attempts"] = attempts_json(r.mesh->attempts);
         if (r.mesh->narrow_faces > 0) j["mesh"]["narrow_faces"] = r.mesh->narrow_faces;
+        if (!r.mesh->mesher.empty()) j["mesh"]["mesher"] = r.mesh->mesher;
         add_features(j, *r.mesh);
     }
     if (r.field) {

@@ -30,6 +30,7 @@ struct MeshStage {              // feature curves and the tet mesh that carries 
     TetTopology topology;
     std::vector<MeshAttempt> attempts;  // how the tets were made from a B-rep; empty for a mesh file
     int narrow_faces = 0;       // B-rep faces meshed finer than the size (MeshOptions::keep_narrow_faces)
+    std::string mesher;         // "tetgen" or "hxt", the one that made the tets; empty for a mesh file
 };
 
 struct FieldStage {             // boundary conditions and the frame field solved under them

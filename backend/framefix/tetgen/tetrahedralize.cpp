@@ -164,14 +164,19 @@ std::string run_tetgen(const SurfaceMesh& surface, double h, bool keep_boundary,
 
 }  // namespace
 
-TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary,
-                             const Points& inserted) {
+double checked_volume_size(const SurfaceMesh& surface, const MeshOptions& options) {
     if (surface.triangles.rows() < 4) throw Error("mesh", "the surface has " + std::to_string(surface.triangles.rows()) +
                                                               " triangles; a closed surface needs at least 4");
     const double volume = enclosed_volume(surface);
     if (!(volume > 0)) throw Error("mesh", "the surface encloses no positive volume; it must be closed and outward");
     const double h = options.size > 0 ? options.size : size_for_tets(volume, options.target_tets);
     check_memory(volume, h, options);
+    return h;
+}
+
+TetgenRun try_tetrahedralize(const SurfaceMesh& surface, const MeshOptions& options, bool keep_boundary,
+                             const Points& inserted) {
+    const double h = checked_volume_size(surface, options);
 
     // TetGen can crash in boundary recovery instead of throwing: it runs in a worker process.
     // No hint: mesh_brep tries other ways first and ends the message itself.

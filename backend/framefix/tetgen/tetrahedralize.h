@@ -30,6 +30,11 @@ struct TetgenRun {
     TetMesh mesh;         // when meshed
 };
 
+// The tet edge length for `surface` (options.size, or the one giving about options.target_tets
+// tets), after the checks every volume mesher needs: a closed, outward surface, and a size whose
+// memory estimate fits (framefix::Error, stage "mesh", otherwise).
+double checked_volume_size(const SurfaceMesh& surface, const MeshOptions& options);
+
 // tetrahedralize() without throwing for TetGen's failures (bad options still throw).
 // keep_boundary = false lets TetGen split boundary triangles and segments (no -Y); the pieces keep
 // their face and edge tags.

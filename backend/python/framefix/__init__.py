@@ -19,32 +19,35 @@ __all__ = ["Error", "Shape", "TetMesh", "FrameField", "SingularityGraph", "Analy
 
 
 def run(part, stop_after="singularities", method="auto", size=None, size_factor=1.0, threads=0,
-        budget_s=0.0, fillet_rims=False, hex_size=None, layers=0, order=1):
+        budget_s=0.0, fillet_rims=False, hex_size=None, layers=0, order=1, mesher="tetgen"):
     """The pipeline on a file path, a :class:`Shape`, or a BREP string, up to `stop_after`
     (load, mesh, field, singularities, correct, blocks, hexmesh); `method` is the correction (see
     :func:`correction_methods`), or "none"; `budget_s` is method auto's time budget (0: 120 s
     per 50k tets); `fillet_rims` makes method fillet fillet the rims across the wall from each
     concave edge too (a groove turns smooth). Returns an :class:`Analysis` whose stages past
     `stop_after` are None; ``report(result)`` gives report.json's content as a dict.
-    `hex_size`, `layers` and `order` are the hex mesh's (see :func:`hex_mesh`).
+    `hex_size`, `layers` and `order` are the hex mesh's (see :func:`hex_mesh`). `mesher` is the
+    volume mesher: "tetgen" (the default) or "hxt" (gmsh's HXT: several times faster on large
+    meshes; with more than one thread its tets differ slightly from run to run).
     """
     size = float(size or 0.0)
     hex_args = (float(hex_size or 0.0), int(layers), int(order))
     if isinstance(part, str) and part.lstrip().startswith("DBRep_DrawableShape"):
         part = load_brep_string(part)
+    args = (stop_after, method, size, size_factor, threads, budget_s, fillet_rims, *hex_args)
     if isinstance(part, Shape):
-        return _core.run_shape(part, stop_after, method, size, size_factor, threads, budget_s, fillet_rims, *hex_args)
-    return _core.run_file(str(part), stop_after, method, size, size_factor, threads, budget_s, fillet_rims, *hex_args)
+        return _core.run_shape(part, *args, mesher=mesher)
+    return _core.run_file(str(part), *args, mesher=mesher)
 
 
-def mesh_part(part, size=None, size_factor=1.0, threads=0):
+def mesh_part(part, size=None, size_factor=1.0, threads=0, mesher="tetgen"):
     """Load, classify feature curves, tet mesh. Returns an :class:`Analysis` (field None)."""
-    return run(part, "mesh", size=size, size_factor=size_factor, threads=threads)
+    return run(part, "mesh", size=size, size_factor=size_factor, threads=threads, mesher=mesher)
 
 
-def analyze(part, size=None, size_factor=1.0, threads=0):
+def analyze(part, size=None, size_factor=1.0, threads=0, mesher="tetgen"):
     """Mesh, frame field and singularity graph of a part (path, :class:`Shape` or BREP string)."""
-    return run(part, "singularities", size=size, size_factor=size_factor, threads=threads)
+    return run(part, "singularities", size=size, size_factor=size_factor, threads=threads, mesher=mesher)
 
 
 def correct(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False):

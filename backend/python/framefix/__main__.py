@@ -29,6 +29,7 @@ def main(argv=None):
     parser.add_argument("--hex-size", type=float, default=0.0)
     parser.add_argument("--layers", type=int, default=0)
     parser.add_argument("--order", type=int, default=1)
+    parser.add_argument("--mesher", default="tetgen")
     try:
         args = parser.parse_args(argv)
     except SystemExit as e:
@@ -38,7 +39,8 @@ def main(argv=None):
         if args.command == "correct" and args.method == "none":
             raise framefix.Error("correct: method 'none' corrects nothing; use analyze, or --method snap")
         result = framefix.run(args.part, STAGES[args.command], args.method, args.size, args.size_factor,
-                              args.threads, args.budget_s, args.fillet_rims, args.hex_size, args.layers, args.order)
+                              args.threads, args.budget_s, args.fillet_rims, args.hex_size, args.layers, args.order,
+                              mesher=args.mesher)
         result.write_outputs(args.out)
     except framefix.Error as e:
         print(f"framefix: error [{str(e).split(':', 1)[0]}]: {str(e).split(': ', 1)[-1]}", file=sys.stderr)
