@@ -1,5 +1,5 @@
-// run_isolated: the worker's result comes back; its errors, crashes and hangs become Errors here,
-// and this process goes on.
+// run_isolated and run_program: the worker's result comes back; its errors, crashes and hangs
+// become Errors here, and this process goes on.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <new>
 #include <thread>
+#include <vector>
 
 #include "framefix/core/error.h"
 #include "framefix/core/isolation.h"
@@ -81,6 +82,40 @@ TEST(Isolation, AHangIsStoppedAfterTheTimeout) {
         task);
     EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
     EXPECT_EQ(m, "the test worker did not finish within 0.3 s; try something else");
+}
+
+std::string program_message(const std::string& program, const std::vector<std::string>& args) {
+    try {
+        run_program(kTask, program, args);
+    } catch (const Error& e) {
+        EXPECT_EQ(e.stage(), kTask.stage);
+        return e.message();
+    }
+    ADD_FAILURE() << "no Error";
+    return "";
+}
+
+TEST(Program, ReturnsWhatItWrote) {
+    EXPECT_EQ(run_program(kTask, "/bin/sh", {"-c", "printf 'a\\0b'"}), std::string("a\0b", 3));
+}
+
+TEST(Program, ACrashAnExitAndAMissingProgramAreErrors) {
+    EXPECT_EQ(program_message("/bin/sh", {"-c", "kill -SEGV $$"}), "the test worker crashed (Segmentation fault); try something else");
+    EXPECT_NE(program_message("/bin/sh", {"-c", "exit 3"}).find("stopped unexpectedly (exit code 3)"), std::string::npos);
+    EXPECT_EQ(program_message("/nonexistent/framefix-hxt", {}), "cannot run /nonexistent/framefix-hxt; try something else");
+}
+
+TEST(Program, AHangIsStoppedAfterTheTimeout) {
+    IsolatedTask task = kTask;
+    task.timeout_s = 0.3;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        run_program(task, "/bin/sleep", {"30"});
+        ADD_FAILURE() << "no Error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.message(), "the test worker did not finish within 0.3 s; try something else");
+    }
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(5));
 }
 
 TEST(Isolation, CanBeTurnedOffToDebug) {
