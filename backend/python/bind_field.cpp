@@ -46,6 +46,7 @@ void bind_field(py::module_& m) {
         .def_readonly("energy", &FrameField::energy)
         .def_readonly("initial_energy", &FrameField::initial_energy)
         .def_readonly("energy_history", &FrameField::energy_history)
+        .def_readonly("change_history", &FrameField::change_history, "|q_k - q_k-1|_M / |q_k|_M per MBO iteration")
         .def_readonly("iterations", &FrameField::iterations)
         .def_readonly("solver", &FrameField::solver);
 
