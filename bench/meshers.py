@@ -72,7 +72,7 @@ def models(folders):
 
 
 def compare(args):
-    print("| model | x | tets T / H | mesh s T / H | min dihedral T / H | slivers %% T / H | graph T | graph H |")
+    print("| model | x | tets T / H | mesh s T / H | min dihedral T / H | slivers % T / H | graph T | graph H |")
     print("|---|---|---|---|---|---|---|---|")
     same = total = faster = 0
     for part in models(args.folder):

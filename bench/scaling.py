@@ -4,7 +4,7 @@
 second of the hex mesh stage, and the peak memory.
 
     /usr/bin/python3 bench/scaling.py [--part samples/notch.step] [--method snap] [--threads 2]
-                                      [--json OUT.json]
+                                      [--mesher tetgen|hxt] [--json OUT.json]
 
 Prints a Markdown table; --json also writes the rows for scripts/plot_scaling.py. A benchmark:
 run it by hand on an otherwise idle machine, never as a test.
@@ -22,15 +22,16 @@ TARGETS = [50e3, 200e3, 1e6, 2e6]  # tets; the default size gives about the firs
 STAGES = ["load", "mesh", "field", "singularities", "correct", "blocks", "hexmesh"]
 
 
-def run(binary, part, method, factor, threads, out):
-    cmd = [binary, "hexmesh", part, "--method", method, "--size-factor", "%.4f" % factor,
+def run(binary, part, method, mesher, factor, threads, out):
+    cmd = [binary, "hexmesh", part, "--method", method, "--size-factor", "%.4f" % factor, "--mesher", mesher,
            "--threads", str(threads), "--out", out, "--quiet"]
     done = subprocess.run(cmd, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit("scaling: %s failed: %s" % (" ".join(cmd), done.stderr.strip()))
     with open(os.path.join(out, "report.json")) as f:
         report = json.load(f)
-    row = {"target": factor, "tets": report["mesh"]["tets"], "peak_mb": report["peak_memory_mb"]}
+    row = {"target": factor, "tets": report["mesh"]["tets"], "peak_mb": report["peak_memory_mb"],
+           "mbo_iterations": report["field"]["iterations"], "mbo_converged": report["field"]["converged"]}
     row.update({s: report["timings_s"].get(s, 0.0) for s in STAGES + ["total"]})
     hexmesh = report.get("hexmesh", {})
     row["hexes"] = hexmesh.get("hexes", 0)
@@ -43,6 +44,7 @@ def main():
     ap.add_argument("--part", default=os.path.join(ROOT, "samples", "notch.step"))
     ap.add_argument("--method", default="snap")
     ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--mesher", default="tetgen", choices=["tetgen", "hxt"])
     ap.add_argument("--binary", default=os.path.join(ROOT, "build", "bin", "framefix"))
     ap.add_argument("--json")
     a = ap.parse_args()
@@ -50,15 +52,16 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for i, tets in enumerate(TARGETS):
             factor = (TARGETS[0] / tets) ** (1.0 / 3.0)  # tets scale as size^-3
-            rows.append(run(a.binary, a.part, a.method, factor, a.threads, os.path.join(tmp, str(i))))
-    print("| tets | " + " | ".join(STAGES) + " | total s | peak MB | hexes | hexes/s |")
-    print("|---" * (len(STAGES) + 5) + "|")
+            rows.append(run(a.binary, a.part, a.method, a.mesher, factor, a.threads, os.path.join(tmp, str(i))))
+    print("| tets | " + " | ".join(STAGES) + " | total s | peak MB | hexes | hexes/s | MBO iterations |")
+    print("|---" * (len(STAGES) + 6) + "|")
     for r in rows:
         print("| {:,} | ".format(r["tets"]) + " | ".join("%.2f" % r[s] for s in STAGES) +
-              " | %.1f | %.0f | %d | %.0f |" % (r["total"], r["peak_mb"], r["hexes"], r["hexes_per_s"]))
+              " | %.1f | %.0f | %d | %.0f | %d%s |" % (r["total"], r["peak_mb"], r["hexes"], r["hexes_per_s"],
+                                                      r["mbo_iterations"], "" if r["mbo_converged"] else " (cap)"))
     if a.json:
         with open(a.json, "w") as f:
-            json.dump({"part": a.part, "method": a.method, "threads": a.threads, "rows": rows}, f, indent=1)
+            json.dump({"part": a.part, "method": a.method, "mesher": a.mesher, "threads": a.threads, "rows": rows}, f, indent=1)
 
 
 if __name__ == "__main__":
