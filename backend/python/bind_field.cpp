@@ -48,19 +48,24 @@ void bind_field(py::module_& m) {
         .def_readonly("energy_history", &FrameField::energy_history)
         .def_readonly("change_history", &FrameField::change_history, "|q_k - q_k-1|_M / |q_k|_M per MBO iteration")
         .def_readonly("iterations", &FrameField::iterations)
+        .def_readonly("converged", &FrameField::converged)
+        .def_readonly("extrapolations", &FrameField::extrapolations)
         .def_readonly("solver", &FrameField::solver);
 
     m.def(
         "solve_frame_field",
-        [](const TetMesh& mesh, const std::vector<EdgeFeature>& features, int max_iterations, int threads) {
+        [](const TetMesh& mesh, const std::vector<EdgeFeature>& features, int max_iterations, int threads,
+           bool extrapolate) {
             const TetTopology topo = build_topology(mesh);
             const Constraints c = boundary_constraints(mesh, feature_set(features));
             FieldOptions o;
             o.max_iterations = max_iterations;
             o.threads = threads;
+            o.extrapolate = extrapolate;
             return solve_frame_field(mesh, topo, c, o);
         },
         py::arg("mesh"), py::arg("features"), py::arg("max_iterations") = 60, py::arg("threads") = 0,
+        py::arg("extrapolate") = true,
         py::call_guard<py::gil_scoped_release>(), "Boundary-aligned smooth frame field (linear init + MBO)");
 
     py::class_<SingularCurve>(m, "SingularCurve")

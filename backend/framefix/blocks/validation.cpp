@@ -323,7 +323,7 @@ std::vector<BlockPair> check_conformity(const std::vector<BlockFaces>& faces, do
             for (int p = 0; p < int(faces[b].label.size()); ++p) if (faces[b].label[p] == c) pb.push_back(p);
             for (int p = 0; p < int(faces[c].label.size()); ++p) if (faces[c].label[p] == b) pc.push_back(p);
             if (pb.empty() && pc.empty()) continue;
-            BlockPair pair{b, c, false, ""};
+            BlockPair pair{b, c, false, false, ""};  // one_face only once checked below
             if (pb.size() != 1 || pc.size() != 1) {
                 pair.reason = "patches " + std::to_string(pb.size()) + "|" + std::to_string(pc.size());
             } else {

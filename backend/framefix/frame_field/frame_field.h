@@ -50,6 +50,7 @@ struct FieldOptions {
     double tau_power = 3;        // tau_k = max(tau_0 / k^tau_power, h_mean^2)
     double cg_tolerance = 1e-6;  // relative residual of each MBO diffusion solve (init: x 1e-2)
     bool reorder = true;         // solve on a reverse Cuthill-McKee vertex numbering (cache locality)
+    bool extrapolate = true;     // at the tau floor, jump along a drifting slow mode (Aitken)
 };
 
 using FrameCoefficients = Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>;
@@ -69,6 +70,7 @@ struct FrameField {
     int linear_iterations = 0;       // CG iterations summed over all solves (direct: number of solves)
     std::vector<int> solve_iterations;  // per solve: linear init, then one per diffusion
     bool converged = false;          // stopped on the change test (not on max_iterations)
+    int extrapolations = 0;          // jumps kept at the tau floor (FieldOptions::extrapolate)
     double seconds_init = 0;         // assembly + constraints + linear solve + projection, wall clock
     double seconds_smooth = 0;       // MBO (+ relaxed step), wall clock
     std::string solver;              // which sparse solver ran

@@ -8,6 +8,7 @@
 
 #include "framefix/core/error.h"
 #include "framefix/frame_field/frame_field.h"
+#include "framefix/frame_field/extrapolation.h"
 #include "framefix/frame_field/linear_solver.h"
 #include "framefix/frame_field/projection.h"
 #include "framefix/frame_field/reorder.h"
@@ -24,15 +25,17 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 // iterates move little), retried with the top-5 starts when the result is far from the manifold
 // (a frame that jumped: the warm run may sit on a non-global maximum). Normal-aligned:
 // rescale (a, b) to the circle of radius sqrt(5/12). Fixed: the constraint itself.
+// `only`: project just these vertices (nullptr: all).
 void project_field(const ConstrainedSpace& s, FrameCoefficients& q, std::vector<Eigen::Matrix3d>& R, bool warm,
-                   int threads) {
+                   int threads, const std::vector<int>* only = nullptr) {
     ProjectionOptions cold;
     cold.starts = 5;
     const ProjectionOptions hot;  // starts_with_warm = 0: the warm start only
-    const int nv = s.vertices();
+    const int nv = only ? int(only->size()) : s.vertices();
     const double radius = std::sqrt(5.0 / 12.0);
 #pragma omp parallel for schedule(dynamic, 512) num_threads(threads)
-    for (int v = 0; v < nv; ++v) {
+    for (int i = 0; i < nv; ++i) {
+        const int v = only ? (*only)[i] : i;
         switch (s.kind[v]) {
             case ConstraintKind::Free: {
                 const SH9 qv = q.row(v).transpose();
@@ -153,18 +156,26 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
         last_tau = tau;
     };
     FrameCoefficients next(nv, 9);
+    FloorExtrapolation extrapolation(
+        sys,
+        [&](FrameCoefficients& f, std::vector<Eigen::Matrix3d>& rot, const std::vector<int>& only) {
+            project_field(space, f, rot, true, threads, &only);
+        },
+        threads);
     for (int k = 1; k <= o.max_iterations; ++k) {
         const double tau = std::max(tau0 / std::pow(double(k), o.tau_power), tau_floor);
         diffuse(q, tau, next);
         project_field(space, next, R, true, threads);
         const double change = mass_norm_diff(sys, next, q, threads) /
                               std::max(1e-300, mass_norm_diff(sys, next, FrameCoefficients(), threads));
+        const bool done = tau <= tau_floor && change < o.tolerance;
+        if (o.extrapolate && tau <= tau_floor && !done) out.extrapolations += extrapolation.after_step(q, next, R);
         q.swap(next);
         out.iterations = k;
         out.change_history.push_back(change);
         out.energy_history.push_back(dirichlet_energy(sys, q, threads));
         report(o.progress, "field", 0.1 + 0.85 * double(k) / o.max_iterations);
-        if (tau <= tau_floor && change < o.tolerance) {
+        if (done) {
             out.converged = true;
             break;
         }

@@ -240,7 +240,8 @@ std::string report_json(const RunResult& r) {
     if (r.field) {
         const FrameField& f = r.field->frames;
         j["field"] = {{"energy", f.energy}, {"initial_energy", f.initial_energy}, {"iterations", f.iterations},
-                      {"solver", f.solver}, {"converged", f.converged}};
+                      {"solver", f.solver}, {"converged", f.converged},
+                      {"extrapolations", f.extrapolations}};
     }
     if (r.singularities) j["singularities"] = singularities_json(*r.singularities);
     if (r.correction) j["correction"] = correction_json(*r.correction, r.singularities->summary);
