@@ -65,7 +65,7 @@ void bind_field(py::module_& m) {
             return solve_frame_field(mesh, topo, c, o);
         },
         py::arg("mesh"), py::arg("features"), py::arg("max_iterations") = 60, py::arg("threads") = 0,
-        py::arg("extrapolate") = true,
+        py::arg("extrapolate") = false,
         py::call_guard<py::gil_scoped_release>(), "Boundary-aligned smooth frame field (linear init + MBO)");
 
     py::class_<SingularCurve>(m, "SingularCurve")

@@ -62,3 +62,15 @@ def test_errors_name_the_stage_and_what_to_do():
         framefix.analyze("part.xyz")
     with pytest.raises(framefix.Error, match=r"^options: unknown stage 'solve'; use load, mesh"):
         framefix.run(str(SAMPLES / "cube.step"), stop_after="solve")
+
+
+def test_field_extrapolation_is_an_option_that_keeps_the_notch_graph():
+    """Extrapolation at the MBO floor (evaluated, off by default): the notch keeps its one 3-5 curve."""
+    a = framefix.mesh_part(str(SAMPLES / "notch.step"), threads=1)
+    plain = framefix.solve_frame_field(a.mesh, a.features, threads=1)
+    jumped = framefix.solve_frame_field(a.mesh, a.features, threads=1, extrapolate=True)
+    assert plain.extrapolations == 0 and plain.converged
+    assert jumped.extrapolations >= 1 and jumped.converged
+    for field in (plain, jumped):
+        s = framefix.extract_singularities(a.mesh, field, threads=1).summary
+        assert (s["curves"], s["curves_3_5"], s["meshable"]) == (1, 1, False)

@@ -23,7 +23,8 @@ public:
 
     // After a plain MBO step previous -> next (both projected, R the rotations of next): when this
     // step and the last one drift together, replace next and R by a jump further along the step.
-    // Returns whether it jumped; a jump starts a new pair of plain steps.
+    // Returns whether it jumped. The step after a jump is checked against it: when MBO walks
+    // back, later jumps go at most half as far.
     bool after_step(const FrameCoefficients& previous, FrameCoefficients& next, std::vector<Eigen::Matrix3d>& R);
 
 private:
@@ -35,7 +36,10 @@ private:
     FrameCoefficients step_, last_, trial_, best_;  // #V x 9 buffers kept across iterations
     std::vector<Eigen::Matrix3d> R_trial_, R_best_;
     std::vector<int> moving_;  // vertices whose step is not negligible: only they jump
-    bool have_last_ = false;
+    bool have_last_ = false;  // last_ holds the previous plain step
+    bool jumped_ = false;     // the previous call jumped along last_
+    double max_jump_;         // steps; halved each time MBO walks back after a jump
+    double last_jump_ = 0;    // steps of the last jump kept
 };
 
 }  // namespace framefix

@@ -50,7 +50,7 @@ struct FieldOptions {
     double tau_power = 3;        // tau_k = max(tau_0 / k^tau_power, h_mean^2)
     double cg_tolerance = 1e-6;  // relative residual of each MBO diffusion solve (init: x 1e-2)
     bool reorder = true;         // solve on a reverse Cuthill-McKee vertex numbering (cache locality)
-    bool extrapolate = true;     // at the tau floor, jump along a drifting slow mode (Aitken)
+    bool extrapolate = false;    // at the tau floor, jump along a drifting slow mode (Aitken; evaluated, off)
 };
 
 using FrameCoefficients = Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>;

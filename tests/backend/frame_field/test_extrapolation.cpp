@@ -46,6 +46,23 @@ TEST(FloorExtrapolation, SteadyDriftJumpsAsFarAsTheEnergyFalls) {
     EXPECT_LT((c - (r * r + 64 * (r * r - r)) * v).cwiseAbs().maxCoeff(), 1e-12);
 }
 
+// MBO's fixed point is not the energy's minimum: when the step after a jump points back, the
+// jump overshot it, and later jumps go at most half as far (here 32 steps instead of 64).
+TEST(FloorExtrapolation, AWalkBackHalvesTheNextJump) {
+    Drift s;
+    const FrameCoefficients v = s.channel(0);
+    const double r = 0.99, after = r * r + 64 * (r * r - r);
+    FrameCoefficients c = r * r * v;
+    ASSERT_TRUE(s.steps(v, r * v, c));
+    FrameCoefficients back = (after + 0.01) * v;  // the walk back
+    EXPECT_FALSE(s.ex.after_step(c, back, s.R));
+    FrameCoefficients d = (after + 0.009) * v;     // turns again: no pair yet
+    EXPECT_FALSE(s.ex.after_step(back, d, s.R));
+    FrameCoefficients e = (after + 0.008) * v;     // a steady drift of 0.001 v per step
+    ASSERT_TRUE(s.ex.after_step(d, e, s.R));
+    EXPECT_LT((e - (after + 0.008 - 32 * 0.001) * v).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(FloorExtrapolation, TurningStepsDoNotJump) {
     Drift s;
     const FrameCoefficients v = s.channel(0), u = s.channel(1);  // M-orthogonal steps

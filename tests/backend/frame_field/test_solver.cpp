@@ -162,6 +162,27 @@ TEST(Solver, FinalEnergyIsBelowTheProjectedLinearInit) {
     EXPECT_TRUE(f.converged);
 }
 
+// Extrapolation at the floor (off by default, docs/algorithms.md): the same field with 1 and 2
+// threads, the constraints still exact, and an energy below the projected linear init.
+TEST(Solver, ExtrapolationKeepsTheSolveDeterministicAndConstrained) {
+    const testing::Fixture fx = twisted_cube();
+    const TetTopology topo = build_topology(fx.mesh);
+    const Constraints c = twisted_constraints(fx.mesh);
+    FieldOptions o;
+    o.extrapolate = true;
+    o.threads = 2;
+    const FrameField a = solve_frame_field(fx.mesh, topo, c, o);
+    o.threads = 1;
+    const FrameField b = solve_frame_field(fx.mesh, topo, c, o);
+    EXPECT_TRUE(a.coefficients == b.coefficients);
+    EXPECT_EQ(a.extrapolations, b.extrapolations);
+    EXPECT_LE(a.energy, a.initial_energy);
+    for (int v = 0; v < fx.mesh.num_vertices(); ++v)
+        if (c.kind[v] == ConstraintKind::Fixed)
+            EXPECT_LT((a.coefficients.row(v) - c.fixed.row(v)).norm(), 1e-12);
+    EXPECT_EQ(solve_frame_field(fx.mesh, topo, c).extrapolations, 0);  // off by default
+}
+
 TEST(Solver, DirectSolversAgreeWithCg) {
     const testing::Fixture fx = twisted_cube();
     const TetTopology topo = build_topology(fx.mesh);
