@@ -1,8 +1,8 @@
 #pragma once
-// MBO extrapolation at the tau floor (docs/algorithms.md#extrapolation-at-the-floor). Internal
-// to frame_field: at the floor MBO creeps, its steps pointing the same way for dozens of
-// iterations while singular curves slide; a jump along that direction, kept only when it lowers
-// the Dirichlet energy, skips those iterations.
+// MBO extrapolation at the tau floor (docs/algorithms.md, "Extrapolation at the floor"; evaluated,
+// off by default: FieldOptions::extrapolate). Internal to frame_field: at the floor MBO creeps,
+// its steps pointing the same way for dozens of iterations while singular curves slide; a jump
+// along that direction, kept only when it lowers the Dirichlet energy, skips those iterations.
 #include <functional>
 #include <vector>
 
