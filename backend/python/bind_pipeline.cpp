@@ -20,7 +20,7 @@ Stage stage_named(const std::string& name) {
     throw Error("options", "unknown stage '" + name + "'; use load, mesh, field, singularities, correct, blocks or hexmesh");
 }
 
-struct HexArgs { double size = 0; int layers = 0, order = 1; };
+struct HexArgs { double size = 0; int layers = 0, order = 1; bool refine = true; };
 
 RunOptions make_options(const std::string& stop_after, const std::string& method, double size, double size_factor,
                         int threads, double budget_s, bool fillet_rims, const HexArgs& hex, const std::string& mesher) {
@@ -29,6 +29,7 @@ RunOptions make_options(const std::string& stop_after, const std::string& method
     o.hexmesh.size = hex.size;
     o.hexmesh.layers = hex.layers;
     o.hexmesh.order = hex.order;
+    o.hexmesh.refine_flat = hex.refine;
     o.budget_s = budget_s;
     o.fillet.rims = fillet_rims;
     o.stop_after = stage_named(stop_after);
@@ -151,7 +152,17 @@ void bind_hexmesh(py::module_& m) {
                             py::arg("mean_scaled_jacobian") = q.mean_scaled_jacobian,
                             py::arg("share_sj_ge_0_5") = q.share_sj_ge_0_5, py::arg("inverted") = q.inverted,
                             py::arg("volume") = q.volume);
-        });
+        })
+        .def_property_readonly("refinement", [](const HexMesh& h) {
+            const HexRefinement& r = h.refinement;
+            return py::dict(py::arg("applied") = r.applied, py::arg("kept") = r.kept,
+                            py::arg("plain_min_scaled_jacobian") = r.plain_min_scaled_jacobian,
+                            py::arg("refined_min_scaled_jacobian") = r.refined_min_scaled_jacobian,
+                            py::arg("blocks_before") = r.blocks_before, py::arg("blocks") = r.blocks,
+                            py::arg("refined") = r.refined, py::arg("flat_edges_before") = r.flat_edges_before,
+                            py::arg("flat_corners_before") = r.flat_corners_before, py::arg("flat_edges") = r.flat_edges,
+                            py::arg("flat_corners") = r.flat_corners, py::arg("skipped") = r.skipped);
+        }, "the flat-edge refinement: report.json's hexmesh.refinement");
 }
 
 void bind_result(py::module_& m) {
@@ -192,26 +203,26 @@ void bind_pipeline(py::module_& m) {
         "run_file",
         [](const std::string& path, const std::string& stop_after, const std::string& method, double size,
            double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order,
-           const std::string& mesher) {
+           const std::string& mesher, bool refine) {
             return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
-                                                         HexArgs{hex_size, layers, order}, mesher));
+                                                         HexArgs{hex_size, layers, order, refine}, mesher));
         },
         py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
         py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
-        py::arg("mesher") = "tetgen", py::call_guard<py::gil_scoped_release>());
+        py::arg("mesher") = "tetgen", py::arg("refine") = true, py::call_guard<py::gil_scoped_release>());
     m.def(
         "run_shape",
         [](const BrepModel& shape, const std::string& stop_after, const std::string& method, double size,
            double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order,
-           const std::string& mesher) {
+           const std::string& mesher, bool refine) {
             return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
-                                                         HexArgs{hex_size, layers, order}, mesher));
+                                                         HexArgs{hex_size, layers, order, refine}, mesher));
         },
         py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
         py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
-        py::arg("mesher") = "tetgen", py::call_guard<py::gil_scoped_release>());
+        py::arg("mesher") = "tetgen", py::arg("refine") = true, py::call_guard<py::gil_scoped_release>());
     m.def("info_json", &info_json, "`framefix info`: defaults and correction methods, as JSON text");
 }
 

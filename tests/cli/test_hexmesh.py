@@ -44,7 +44,8 @@ def test_notch_hex_mesh_files_agree_with_the_report(tmp_path):
     h = r["hexmesh"]
     assert h["done"] and h["inverted"] == 0 and h["min_scaled_jacobian"] > 0
     assert abs(h["volume"] - h["part_volume"]) <= 0.01 * h["part_volume"]
-    assert len(h["blocks"]) == r["blocks"]["count"] == 7
+    assert r["blocks"]["count"] == 7  # as the sheets cut them; the flat-edge block is meshed as three
+    assert len(h["blocks"]) == r["blocks"]["refined"]["count"] == 7 + 2 * h["refinement"]["refined"] == 9
     assert sum(b["hexes"] for b in h["blocks"]) == h["hexes"]
     types, cells = vtk_cells(tmp_path / "hex.vtk")
     assert types == [12] * h["hexes"] and all(len(c) == 8 for c in cells)
@@ -151,3 +152,17 @@ def test_a_tet_mesh_input_gets_a_hex_mesh_on_its_own_boundary(tmp_path):
     assert h["done"] and h["inverted"] == 0
     assert h["min_scaled_jacobian"] == pytest.approx(1, abs=1e-6)
     assert h["volume"] == pytest.approx(h["part_volume"], rel=1e-9)
+
+
+def test_flat_edge_refinement_is_reported_and_can_be_turned_off(tmp_path):
+    r, err = hexmesh(tmp_path / "refined", "notch.step")
+    plain, _ = hexmesh(tmp_path / "plain", "notch.step", "--no-refine")
+    ref = r["hexmesh"]["refinement"]
+    assert ref["applied"] and ref["kept"] and ref["refined"] == 1 and ref["skipped"] == []
+    assert ref["flat_edges_before"] >= 1 and ref["flat_edges"] == 0
+    assert len(ref["flat_corner_positions"]) == ref["flat_corners"]
+    assert r["blocks"]["refined"]["pairs"] == r["blocks"]["pairs"] + 3  # the three new interfaces
+    assert not plain["hexmesh"]["refinement"]["applied"] and "refined" not in plain["blocks"]
+    assert plain["hexmesh"]["min_scaled_jacobian"] == pytest.approx(ref["plain_min_scaled_jacobian"])
+    assert r["hexmesh"]["min_scaled_jacobian"] == pytest.approx(ref["refined_min_scaled_jacobian"])
+    assert r["hexmesh"]["min_scaled_jacobian"] > plain["hexmesh"]["min_scaled_jacobian"] + 0.2

@@ -44,3 +44,15 @@ def test_python_m_framefix_hexmesh(tmp_path):
     assert "27 hexes" in p.stdout
     assert json.loads((tmp_path / "report.json").read_text())["hexmesh"]["hexes"] == 27
     assert (tmp_path / "hex.inp").exists()
+
+
+def test_the_notchs_flat_edge_is_refined_and_can_be_turned_off():
+    refined = framefix.hex_mesh(str(SAMPLES / "notch.step"), method="snap").hexmesh
+    plain = framefix.hex_mesh(str(SAMPLES / "notch.step"), method="snap", refine=False).hexmesh
+    assert refined.done and plain.done
+    r = refined.refinement
+    assert r["applied"] and r["kept"] and r["refined"] >= 1
+    assert r["blocks"] == r["blocks_before"] + 2 * r["refined"] == len(set(refined.hex_block))
+    assert not plain.refinement["applied"] and len(set(plain.hex_block)) == r["blocks_before"]
+    assert refined.quality["min_scaled_jacobian"] > plain.quality["min_scaled_jacobian"]
+    assert plain.quality["min_scaled_jacobian"] == r["plain_min_scaled_jacobian"]

@@ -599,6 +599,14 @@ class BlocksPlumbing(unittest.TestCase):
         finally:
             j.cleanup()
 
+    def test_hex_mesh_text_names_the_blocks_split_in_three(self):
+        h = {"done": True, "order": 1, "hexes": 825, "vertices": 1139, "inverted": 0, "min_scaled_jacobian": 0.67,
+             "mean_scaled_jacobian": 0.96, "share_sj_ge_0_5": 1.0, "refinement": {"kept": True, "refined": 1}}
+        self.assertEqual(report.hexmesh_text(report._hexmesh(h)),
+                         "825 hexes, min scaled Jacobian 0.67, 0 inverted (1 block with a flat edge split in three)")
+        h["refinement"]["kept"] = False  # tried, and the plain blocks gave the better hexes
+        self.assertEqual(report.hexmesh_text(report._hexmesh(h)), "825 hexes, min scaled Jacobian 0.67, 0 inverted")
+
     def test_bad_hex_vtk_is_refused(self):
         use_backend("canned.py")
         j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.5, blocks=True)

@@ -196,16 +196,22 @@ def _hexmesh(h):
         out[key] = float(h[key])
     if out["order"] not in (1, 2):
         _fail("hexmesh.order is not 1 or 2")
+    ref = h.get("refinement") or {}  # absent in reports from before the flat-edge refinement
+    out["refined"] = ref["refined"] if ref.get("kept") and isinstance(ref.get("refined"), int) else 0
     return out
 
 
 def hexmesh_text(h):
-    """'920 hexes, min scaled Jacobian 0.17, 0 inverted' or 'no hex mesh: <reason>'."""
+    """'825 hexes, min scaled Jacobian 0.67, 0 inverted (1 block with a flat edge split in three)'
+    or 'no hex mesh: <reason>'."""
     if not h["done"]:
         return "no hex mesh: %s" % h["reason"]
-    return "%s%s, min scaled Jacobian %.2f, %d inverted" % (
+    text = "%s%s, min scaled Jacobian %.2f, %d inverted" % (
         plural(h["hexes"], "hex"), " (20-node)" if h["order"] == 2 else "",
         h["min_scaled_jacobian"], h["inverted"])
+    if h.get("refined"):
+        text += " (%s with a flat edge split in three)" % plural(h["refined"], "block")
+    return text
 
 
 def plural(n, word):

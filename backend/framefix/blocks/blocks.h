@@ -7,7 +7,7 @@
 // manifold. Each block is then checked to be a topological hexahedron (6 disk faces, 12 edges, 8
 // corners of degree 3) and each pair of neighbouring blocks to share one whole face, corner to
 // corner. Flat block edges/corners (zero-Jacobian after snapping) are found with the normal-angle
-// proxy and reported, not refined (no sheet insertion). hexmesh/ meshes valid blocks with hexes.
+// proxy and reported; hexmesh/ meshes valid blocks with hexes and refines flat edges there.
 #include <string>
 #include <vector>
 

@@ -196,21 +196,6 @@ Points edge_polyline(const TetMesh& mesh, const BlockComplex& cx, int a, int b, 
     return out;
 }
 
-// Local corners of local face `lf` (i = 0, i = 1, j = 0, ...) in cyclic order.
-std::array<int, 4> face_local_corners(int lf) {
-    const int axis = lf / 2, side = lf % 2;
-    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-    std::array<int, 4> out{};
-    const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    for (int n = 0; n < 4; ++n) {
-        int ijk[3];
-        ijk[axis] = side, ijk[u] = uv[n][0], ijk[v] = uv[n][1];
-        out[n] = local_corner(ijk[0], ijk[1], ijk[2]);
-    }
-    return out;
-}
-
-
 // What block_complex needs of one block while it adds the block's edges and faces.
 struct BlockInput {
     int id;
@@ -226,10 +211,7 @@ bool add_edges(const TetMesh& mesh, const BlockInput& in, std::map<std::pair<int
     for (int e = 0; e < 12; ++e) {
         const int dir = e / 4, r = e % 4;  // r: the other two indices, lowest axis first
         const int lo = std::min((dir + 1) % 3, (dir + 2) % 3), hi = std::max((dir + 1) % 3, (dir + 2) % 3);
-        int ijk0[3], ijk1[3];
-        ijk0[dir] = 0, ijk1[dir] = 1;
-        ijk0[lo] = ijk1[lo] = r & 1, ijk0[hi] = ijk1[hi] = r >> 1;
-        const int l0 = local_corner(ijk0[0], ijk0[1], ijk0[2]), l1 = local_corner(ijk1[0], ijk1[1], ijk1[2]);
+        const auto [l0, l1] = edge_local_corners(e);
         const auto key = std::minmax(blk.corners[l0], blk.corners[l1]);
         auto [it, fresh] = edge_of.try_emplace({key.first, key.second}, int(cx.edges.size()));
         blk.edges[e] = it->second;
@@ -288,6 +270,28 @@ bool add_faces(const TetMesh& mesh, const BlockInput& in, std::map<std::pair<int
 }
 
 }  // namespace
+
+std::array<int, 4> face_local_corners(int lf) {
+    const int axis = lf / 2, side = lf % 2;
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    std::array<int, 4> out{};
+    const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int n = 0; n < 4; ++n) {
+        int ijk[3];
+        ijk[axis] = side, ijk[u] = uv[n][0], ijk[v] = uv[n][1];
+        out[n] = local_corner(ijk[0], ijk[1], ijk[2]);
+    }
+    return out;
+}
+
+std::array<int, 2> edge_local_corners(int e) {
+    const int dir = e / 4, r = e % 4;  // r: the other two indices, lowest axis first
+    const int lo = std::min((dir + 1) % 3, (dir + 2) % 3), hi = std::max((dir + 1) % 3, (dir + 2) % 3);
+    int ijk0[3], ijk1[3];
+    ijk0[dir] = 0, ijk1[dir] = 1;
+    ijk0[lo] = ijk1[lo] = r & 1, ijk0[hi] = ijk1[hi] = r >> 1;
+    return {local_corner(ijk0[0], ijk0[1], ijk0[2]), local_corner(ijk1[0], ijk1[1], ijk1[2])};
+}
 
 BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& d) {
     BlockComplex cx;

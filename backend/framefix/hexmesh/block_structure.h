@@ -50,5 +50,9 @@ BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& blocks
 
 // Local corner index of (i, j, k).
 constexpr int local_corner(int i, int j, int k) { return i + 2 * j + 4 * k; }
+// Local corners of local face `lf` (i = 0, i = 1, j = 0, ...) in cyclic order.
+std::array<int, 4> face_local_corners(int lf);
+// Local corners at the start and end of local edge `e` (ComplexBlock::edges' numbering).
+std::array<int, 2> edge_local_corners(int e);
 
 }  // namespace framefix

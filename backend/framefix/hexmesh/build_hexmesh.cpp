@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include "framefix/core/error.h"
+#include "framefix/hexmesh/flat_refinement.h"
 #include "framefix/hexmesh/hex_grid.h"
 #include "framefix/hexmesh/hex_projection.h"
 #include "framefix/mesh/keys.h"
@@ -123,16 +124,23 @@ void measure(const std::vector<int>& block_of, HexMesh& out) {
     q.share_sj_ge_0_5 = out.hexes.empty() ? 0 : double(good) / double(out.hexes.size());
 }
 
-// The hex mesh, or done = false with the reason.
-HexMesh mesh_blocks(const TetMesh& mesh, const BlockDecomposition& blocks, const HexMeshOptions& options,
-                    const CadProjector& cad) {
+// Directions along block edges are read this many tet edges from the corner: past the tet-edge
+// staircase of the chains (about h / 2 deep), before a curved edge turns.
+constexpr double kFlatReachInH = 2.0;
+// A block edge is refined when its two other edges leave one of its ends more than 180 minus
+// kRefineCandidateDeg apart (130 degrees) and the other end more than 180 minus kRefineEndDeg
+// (90 degrees). A hex corner of angle a has a scaled Jacobian of at most sin a, so the two
+// corners of about a / 2 the template makes are better from about 120 degrees on; the ends of
+// one block edge differ, though: on notch_wide at 0.7 x the edge under the arc reads 153
+// degrees at its top and 102 at its bottom, where its hexes fell to 0.05. Whether the refined
+// mesh is kept is decided on the hexes themselves.
+constexpr double kRefineCandidateDeg = 50;
+constexpr double kRefineEndDeg = 90;
+
+// The hex mesh of a complex, or done = false with the reason.
+HexMesh mesh_complex(const TetMesh& mesh, BlockComplex cx, double size, const HexMeshOptions& options,
+                     const CadProjector& cad) {
     HexMesh out;
-    BlockComplex cx = block_complex(mesh, blocks);
-    if (!cx.failure.empty()) {
-        out.reason = cx.failure;
-        return out;
-    }
-    double size = options.size > 0 ? options.size : kDefaultHexSizeInH * blocks.h;
     out.edge_classes = assign_edge_counts(cx, size, options.layers);
     out.size = size;
     HexGrid g = hex_grid(mesh, cx, cad);
@@ -153,6 +161,57 @@ HexMesh mesh_blocks(const TetMesh& mesh, const BlockDecomposition& blocks, const
     }
     if (options.order == 2) add_midpoints(mesh, cx, g, cad, out);
     out.done = true;
+    return out;
+}
+
+int interfaces(const BlockComplex& cx) {
+    return int(std::count_if(cx.faces.begin(), cx.faces.end(), [](const ComplexFace& f) { return !f.boundary; }));
+}
+
+// The refined mesh is kept when it has no more inverted hexes and a higher smallest scaled Jacobian.
+bool better(const HexMesh& refined, const HexMesh& plain) {
+    if (!refined.done) return false;
+    if (!plain.done) return true;
+    if (refined.quality.inverted != plain.quality.inverted) return refined.quality.inverted < plain.quality.inverted;
+    return refined.quality.min_scaled_jacobian > plain.quality.min_scaled_jacobian;
+}
+
+// The hex mesh, or done = false with the reason; with refinement, of the better of the plain and
+// the refined complex (docs/algorithms.md#flat-edge-refinement).
+HexMesh mesh_blocks(const TetMesh& mesh, const BlockDecomposition& blocks, const HexMeshOptions& options,
+                    const CadProjector& cad) {
+    HexMesh out;
+    BlockComplex cx = block_complex(mesh, blocks);
+    if (!cx.failure.empty()) {
+        out.reason = cx.failure;
+        return out;
+    }
+    const double size = options.size > 0 ? options.size : kDefaultHexSizeInH * blocks.h, reach = kFlatReachInH * blocks.h;
+    HexRefinement r;
+    const FlatCount before = count_flat(cx, reach, options.flat_deg);
+    r.blocks_before = r.blocks = int(cx.blocks.size());
+    r.pairs_before = r.pairs = interfaces(cx);
+    r.flat_edges_before = r.flat_edges = before.edges, r.flat_corners_before = r.flat_corners = before.corners;
+    r.flat_corner_positions = before.where;
+    out = mesh_complex(mesh, cx, size, options, cad);
+    if (options.refine_flat) {
+        BlockComplex refined_cx = cx;
+        const FlatRefinement f = refine_flat_edges(mesh, reach, kRefineCandidateDeg, kRefineEndDeg, refined_cx);
+        r.applied = true, r.refined = f.refined, r.skipped = f.skipped;
+        r.plain_min_scaled_jacobian = out.done ? out.quality.min_scaled_jacobian : 0;
+        if (f.refined > 0) {
+            HexMesh refined = mesh_complex(mesh, refined_cx, size, options, cad);
+            r.refined_min_scaled_jacobian = refined.done ? refined.quality.min_scaled_jacobian : 0;
+            r.kept = better(refined, out);
+            if (r.kept) {
+                const FlatCount after = count_flat(refined_cx, reach, options.flat_deg);
+                r.blocks = int(refined_cx.blocks.size()), r.pairs = interfaces(refined_cx);
+                r.flat_edges = after.edges, r.flat_corners = after.corners, r.flat_corner_positions = after.where;
+                out = std::move(refined);
+            }
+        }
+    }
+    out.refinement = r;
     return out;
 }
 

@@ -18,6 +18,9 @@
 namespace framefix {
 
 struct HexMeshOptions {
+    // Blocks with a flat edge are split in three first (docs/algorithms.md#flat-edge-refinement).
+    bool refine_flat = true;
+    double flat_deg = 35;    // a corner whose block edges leave more than 180 - this apart is flat (reported)
     double size = 0;         // target hex edge length, model units; 0 = kDefaultHexSizeInH x tet h
     int layers = 0;          // > 0: the shortest edge class gets this many hexes (overrides size)
     int smoothing_rounds = 30;  // guarded Laplacian rounds on the vertices off the part's boundary
@@ -48,6 +51,20 @@ struct HexQuality {
     double volume = 0;            // sum of the hexes' (trilinear) volumes, model units^3
 };
 
+// What the flat-edge refinement did to the block complex (counts over (block, edge) and
+// (block, corner) pairs).
+struct HexRefinement {
+    bool applied = false;          // the refinement was tried (HexMeshOptions::refine_flat)
+    bool kept = false;             // the refined complex gave the better hexes and was meshed
+    double plain_min_scaled_jacobian = 0, refined_min_scaled_jacobian = 0;  // when tried
+    int blocks_before = 0, blocks = 0;
+    int pairs_before = 0, pairs = 0;   // faces shared by two blocks (each one whole face)
+    int flat_edges_before = 0, flat_corners_before = 0, flat_edges = 0, flat_corners = 0;
+    int refined = 0;               // blocks split into three (in the kept mesh only when `kept`)
+    std::vector<std::string> skipped;  // flat edges left, with the reason
+    std::vector<Eigen::Vector3d> flat_corner_positions;  // of the meshed complex, model units
+};
+
 struct HexMesh {
     bool done = false;
     std::string reason;            // why not, when !done
@@ -66,6 +83,7 @@ struct HexMesh {
     // Neighbour pairs whose shared face matched by its corners although they lay further apart
     // than the blocks' conformity tolerance. Such a mesh is kept only without inverted hexes.
     int off_tolerance_pairs = 0;
+    HexRefinement refinement;
     double seconds = 0;
 };
 

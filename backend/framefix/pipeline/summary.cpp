@@ -56,6 +56,9 @@ std::string human_summary(const RunResult& r) {
         std::snprintf(q, sizeof q, "; %zu hex%s, min scaled Jacobian %.2f, %d inverted", hex->hexes.size(),
                       hex->hexes.size() == 1 ? "" : "es", hex->quality.min_scaled_jacobian, hex->quality.inverted);
         s += hex->done ? std::string(q) : "; no hex mesh: " + hex->reason;
+        const HexRefinement& ref = hex->refinement;
+        if (hex->done && ref.kept)
+            s += " (" + std::to_string(ref.refined) + " block" + (ref.refined == 1 ? "" : "s") + " with a flat edge split in three)";
     }
     if (r.mesh && r.mesh->attempts.size() > 1)
         s += "; meshed on try " + std::to_string(r.mesh->attempts.size()) + " (" + r.mesh->attempts.back().how +

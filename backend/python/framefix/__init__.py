@@ -19,14 +19,14 @@ __all__ = ["Error", "Shape", "TetMesh", "FrameField", "SingularityGraph", "Analy
 
 
 def run(part, stop_after="singularities", method="auto", size=None, size_factor=1.0, threads=0,
-        budget_s=0.0, fillet_rims=False, hex_size=None, layers=0, order=1, mesher="tetgen"):
+        budget_s=0.0, fillet_rims=False, hex_size=None, layers=0, order=1, mesher="tetgen", refine=True):
     """The pipeline on a file path, a :class:`Shape`, or a BREP string, up to `stop_after`
     (load, mesh, field, singularities, correct, blocks, hexmesh); `method` is the correction (see
     :func:`correction_methods`), or "none"; `budget_s` is method auto's time budget (0: 120 s
     per 50k tets); `fillet_rims` makes method fillet fillet the rims across the wall from each
     concave edge too (a groove turns smooth). Returns an :class:`Analysis` whose stages past
     `stop_after` are None; ``report(result)`` gives report.json's content as a dict.
-    `hex_size`, `layers` and `order` are the hex mesh's (see :func:`hex_mesh`). `mesher` is the
+    `hex_size`, `layers`, `order` and `refine` are the hex mesh's (see :func:`hex_mesh`). `mesher` is the
     volume mesher: "tetgen" (the default) or "hxt" (gmsh's HXT: several times faster on large
     meshes; with more than one thread its tets differ slightly from run to run).
     """
@@ -36,8 +36,8 @@ def run(part, stop_after="singularities", method="auto", size=None, size_factor=
         part = load_brep_string(part)
     args = (stop_after, method, size, size_factor, threads, budget_s, fillet_rims, *hex_args)
     if isinstance(part, Shape):
-        return _core.run_shape(part, *args, mesher=mesher)
-    return _core.run_file(str(part), *args, mesher=mesher)
+        return _core.run_shape(part, *args, mesher=mesher, refine=refine)
+    return _core.run_file(str(part), *args, mesher=mesher, refine=refine)
 
 
 def mesh_part(part, size=None, size_factor=1.0, threads=0, mesher="tetgen"):
@@ -70,15 +70,17 @@ def build_blocks(part, method="auto", size=None, size_factor=1.0, threads=0, bud
 
 
 def hex_mesh(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False,
-             hex_size=None, layers=0, order=1):
+             hex_size=None, layers=0, order=1, refine=True):
     """Analyse, correct, cut into blocks, then mesh the blocks with hexahedra.
 
     `hex_size` is the target hex edge length (default: two tet edges), `layers` the hexes along
-    the shortest block edge (overrides it), `order` 1 (8-node) or 2 (20-node). ``.hexmesh`` has
+    the shortest block edge (overrides it), `order` 1 (8-node) or 2 (20-node). With `refine`,
+    a block with a flat edge is split in three where that gives better hexes. ``.hexmesh`` has
     ``.done`` (and ``.reason`` when not), ``.points``, ``.hexes`` (VTK order), ``.hex_block``,
-    ``.scaled_jacobian`` and ``.quality``.
+    ``.scaled_jacobian``, ``.quality`` and ``.refinement``.
     """
-    return run(part, "hexmesh", method, size, size_factor, threads, budget_s, fillet_rims, hex_size, layers, order)
+    return run(part, "hexmesh", method, size, size_factor, threads, budget_s, fillet_rims, hex_size, layers, order,
+               refine=refine)
 
 
 def info():

@@ -122,11 +122,13 @@ TEST(HexMesh, TheNotchAndTheCylinderAreSoundAtTwoSizes) {
 }
 
 TEST(HexMesh, BlockCountsMatchTheGraph) {
-    // The notch: 7 blocks (one hex block each); the cylinder: 5; shared edges carry one count,
-    // so the hexes of all blocks add up.
+    // The notch: 7 blocks (one hex block each); the cylinder: 5. Each block the flat-edge
+    // template refines becomes three. Shared edges carry one count, so the hexes of all blocks
+    // add up.
     for (auto [name, blocks] : {std::pair{"notch", 7}, std::pair{"cylinder", 5}}) {
         const HexMesh& m = *run(name, 1).hexmesh;
-        ASSERT_EQ(int(m.blocks.size()), blocks) << name;
+        EXPECT_EQ(m.refinement.blocks_before, blocks) << name;
+        ASSERT_EQ(int(m.blocks.size()), blocks + (m.refinement.kept ? 2 * m.refinement.refined : 0)) << name;
         size_t total = 0;
         for (const HexBlockStats& b : m.blocks) {
             total += size_t(b.hexes);
@@ -134,6 +136,37 @@ TEST(HexMesh, BlockCountsMatchTheGraph) {
         }
         EXPECT_EQ(total, m.hexes.size());
     }
+}
+
+TEST(HexMesh, TheNotchsFlatEdgeIsRefinedIntoProperHexes) {
+    // After snapping, the block under the notch's arc has a flat edge (paper Fig. 6b); the
+    // template splits it in three (Fig. 6c) and its hexes lose their near-zero corners.
+    for (double f : {1.0, 0.7}) {
+        SCOPED_TRACE(f);
+        const RunResult& r = run("notch", f);
+        ASSERT_TRUE(r.hexmesh && r.hexmesh->done) << r.hexmesh->reason;
+        const HexRefinement& ref = r.hexmesh->refinement;
+        EXPECT_TRUE(ref.applied);
+        EXPECT_GE(ref.refined, 1);
+        EXPECT_TRUE(ref.kept);
+        EXPECT_EQ(ref.flat_edges, 0);
+        EXPECT_LT(ref.plain_min_scaled_jacobian, 0.35);
+        EXPECT_GE(r.hexmesh->quality.min_scaled_jacobian, 0.4);
+        EXPECT_EQ(r.hexmesh->quality.min_scaled_jacobian, ref.refined_min_scaled_jacobian);
+        expect_sound(r, "notch, refined");
+    }
+}
+
+TEST(HexMesh, WithoutRefinementTheBlocksAreMeshedAsTheyAre) {
+    RunOptions options;
+    options.stop_after = Stage::hexmesh;
+    options.hexmesh.refine_flat = false;
+    const RunResult r = framefix::run(RunInput::file(sample("notch")), options);
+    ASSERT_TRUE(r.hexmesh && r.hexmesh->done) << r.hexmesh->reason;
+    EXPECT_FALSE(r.hexmesh->refinement.applied);
+    EXPECT_EQ(r.hexmesh->blocks.size(), 7u);
+    EXPECT_GE(r.hexmesh->refinement.flat_corners, 1);  // counted all the same
+    EXPECT_NEAR(r.hexmesh->quality.min_scaled_jacobian, run("notch", 1).hexmesh->refinement.plain_min_scaled_jacobian, 1e-12);
 }
 
 TEST(HexMesh, OrderTwoPutsEdgeMidpointsOnThePart) {
