@@ -158,7 +158,8 @@ def test_flat_edge_refinement_is_reported_and_can_be_turned_off(tmp_path):
     r, err = hexmesh(tmp_path / "refined", "notch.step")
     plain, _ = hexmesh(tmp_path / "plain", "notch.step", "--no-refine")
     ref = r["hexmesh"]["refinement"]
-    assert ref["applied"] and ref["kept"] and ref["refined"] == 1 and ref["skipped"] == []
+    assert ref["applied"] and ref["kept"] and ref["refined"] == 1
+    assert all(s.startswith("block ") and ": " in s for s in ref["skipped"])  # other near-flat blocks, with why
     assert ref["flat_edges_before"] >= 1 and ref["flat_edges"] == 0
     assert len(ref["flat_corner_positions"]) == ref["flat_corners"]
     assert r["blocks"]["refined"]["pairs"] == r["blocks"]["pairs"] + 3  # the three new interfaces

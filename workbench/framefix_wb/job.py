@@ -145,8 +145,9 @@ class AnalysisJob:
                                       or mesh["block"].max() >= report["blocks"]["count"]):
                 raise BackendError("the backend's %s names blocks its report does not have"
                                    % BLOCKS_VTK)
-            mesh["surfaces"] = self._block_cells(BLOCK_SURFACES_VTK, VTK_TRIANGLE, ("block",), report)
-            mesh["edges"] = self._block_cells(BLOCK_EDGES_VTK, VTK_POLY_LINE, ("block",), report)
+            count = report["blocks"]["count"]
+            mesh["surfaces"] = self._block_cells(BLOCK_SURFACES_VTK, VTK_TRIANGLE, ("block",), count)
+            mesh["edges"] = self._block_cells(BLOCK_EDGES_VTK, VTK_POLY_LINE, ("block",), count)
             mesh["hexes"] = self._hexes(report)
             report["block_mesh"] = mesh
         filleted = os.path.join(self.out_dir, FILLETED_BREP)
@@ -162,17 +163,21 @@ class AnalysisJob:
         if not h or not h["done"]:
             return None
         cell_type = VTK_QUADRATIC_HEXAHEDRON if h["order"] == 2 else VTK_HEXAHEDRON
-        hexes = self._block_cells(HEX_VTK, cell_type, ("block",), report, ("scaled_jacobian",))
+        # A block split in three by the flat-edge refinement gives its parts new ids, from the
+        # cut blocks' count up to the meshed complex's (one entry each in hexmesh.blocks).
+        count = max(report["blocks"]["count"], h["blocks"])
+        hexes = self._block_cells(HEX_VTK, cell_type, ("block",), count, ("scaled_jacobian",))
         if len(hexes["cells"]) != h["hexes"]:
             raise BackendError("the backend's %s has %d hexes, its report %d"
                                % (HEX_VTK, len(hexes["cells"]), h["hexes"]))
         hexes["cells"] = numpy.array(hexes["cells"]).reshape(len(hexes["cells"]), -1)
         return hexes
 
-    def _block_cells(self, name, cell_type, arrays, report, floats=()):
+    def _block_cells(self, name, cell_type, arrays, count, floats=()):
+        """The cells of a VTK file whose `block` ids must lie in [0, count)."""
         cells = read_cells(os.path.join(self.out_dir, name), cell_type, arrays, floats)
         blocks = cells["block"]
-        if len(blocks) and (blocks.min() < 0 or blocks.max() >= report["blocks"]["count"]):
+        if len(blocks) and (blocks.min() < 0 or blocks.max() >= count):
             raise BackendError("the backend's %s names blocks its report does not have" % name)
         return cells
 

@@ -198,6 +198,7 @@ def _hexmesh(h):
         _fail("hexmesh.order is not 1 or 2")
     ref = h.get("refinement") or {}  # absent in reports from before the flat-edge refinement
     out["refined"] = ref["refined"] if ref.get("kept") and isinstance(ref.get("refined"), int) else 0
+    out["blocks"] = len(h["blocks"]) if isinstance(h.get("blocks"), list) else 0  # blocks of the meshed complex
     return out
 
 
