@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+
+#include "framefix/hexmesh/hex_projection.h"
 
 namespace framefix {
 
@@ -128,28 +131,12 @@ Eigen::Vector3d fermat_point(const std::array<Eigen::Vector3d, 3>& p) {
     return x;
 }
 
-// Closest point to p on a face's triangles, and the triangle vertex nearest it.
-Eigen::Vector3d onto_triangles(const TetMesh& mesh, const ComplexFace& f, const Eigen::Vector3d& p, int& vertex) {
-    Eigen::Vector3d best = p;
-    double closest = 1e300;
-    for (const Eigen::Vector3i& t : f.triangles) {
-        const Eigen::Vector3d a = mesh.points.row(t[0]).transpose(), b = mesh.points.row(t[1]).transpose(),
-                              c = mesh.points.row(t[2]).transpose();
-        const Eigen::Vector3d n = (b - a).cross(c - a);
-        if (n.squaredNorm() == 0) continue;
-        Eigen::Vector3d q = p - n.dot(p - a) / n.squaredNorm() * n;
-        const Eigen::Vector3d ab = b - a, ac = c - a, aq = q - a;  // barycentric test, else the nearest vertex
-        const double d00 = ab.dot(ab), d01 = ab.dot(ac), d11 = ac.dot(ac), d20 = aq.dot(ab), d21 = aq.dot(ac);
-        const double den = d00 * d11 - d01 * d01, v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
-        if (v < 0 || w < 0 || v + w > 1) q = (p - a).norm() < (p - b).norm() ? ((p - a).norm() < (p - c).norm() ? a : c)
-                                                                              : ((p - b).norm() < (p - c).norm() ? b : c);
-        if ((q - p).squaredNorm() < closest) {
-            closest = (q - p).squaredNorm(), best = q;
-            vertex = t[0];
-            for (int k = 1; k < 3; ++k)
-                if ((mesh.points.row(t[k]).transpose() - q).norm() < (mesh.points.row(vertex).transpose() - q).norm()) vertex = t[k];
-        }
-    }
+// The vertex of a face's triangles nearest p.
+int nearest_vertex(const TetMesh& mesh, const ComplexFace& f, const Eigen::Vector3d& p) {
+    int best = -1;
+    for (const Eigen::Vector3i& t : f.triangles)
+        for (int v : {t[0], t[1], t[2]})
+            if (best < 0 || (mesh.points.row(v).transpose() - p).norm() < (mesh.points.row(best).transpose() - p).norm()) best = v;
     return best;
 }
 
@@ -167,6 +154,7 @@ public:
 private:
     const TetMesh& mesh_;
     BlockComplex& cx_;
+    std::optional<SurfaceLocator> locator_;  // made on the first refined block
     std::map<std::pair<int, int>, int> edge_of_;
     std::map<std::array<int, 4>, int> face_of_;
 
@@ -270,8 +258,9 @@ std::string Splitter::refine(int bi, int e, const std::vector<int>& edge_users) 
         const ComplexFace end = cx_.faces[face(2, z)];
         const Eigen::Vector3d centre =
             fermat_point({cx_.corners[B[z]].position, cx_.corners[mAD[z]].position, cx_.corners[mCD[z]].position});
-        int vertex = -1;
-        const Eigen::Vector3d o = onto_triangles(mesh_, end, centre, vertex);
+        if (!locator_) locator_.emplace(mesh_);
+        const Eigen::Vector3d o = FaceProjector(mesh_, end, *locator_).project(centre, {});
+        const int vertex = nearest_vertex(mesh_, end, o);
         O[z] = add_corner(o, vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{});
         for (int c : {B[z], mAD[z], mCD[z]}) add_straight_edge(O[z], c);
         add_face({B[z], A[z], mAD[z], O[z]}, &end);
