@@ -15,12 +15,18 @@ def alive(pid):
         return False
 
 
-def notch_document(name="Notch"):
-    """A new document holding samples/notch.step as a Part feature; returns (doc, part)."""
+def sample_document(sample, name, part_name):
+    """A new document `name` holding samples/<sample>.step as the Part feature `part_name`;
+    returns (doc, part)."""
     import FreeCAD
     import Part
     doc = FreeCAD.newDocument(name)
-    part = doc.addObject("Part::Feature", "Notch")
-    part.Shape = Part.read(os.path.join(SAMPLES, "notch.step"))
+    part = doc.addObject("Part::Feature", part_name)
+    part.Shape = Part.read(os.path.join(SAMPLES, sample + ".step"))
     doc.recompute()
     return doc, part
+
+
+def notch_document(name="Notch"):
+    """A new document holding samples/notch.step as a Part feature; returns (doc, part)."""
+    return sample_document("notch", name, "Notch")

@@ -46,6 +46,8 @@ struct BlockOptions {
     double thin_width = 1.0;
     double bevel_width = 2.5;      // strip-like patches below this width between two ~90 deg flanks split, in h
     double conform_tolerance = 2.5;  // corner positions of a shared face must match within this, in h
+    // Corner lines of concave-curve curtains emit sheets (docs/algorithms.md#curtain-corners).
+    bool curtain_corners = true;
     double flat_deg = 35;          // a block edge whose two face normals are closer than this is flat
     int threads = 0;               // OpenMP threads, 0 = all
 };
@@ -132,6 +134,11 @@ struct BlockDecomposition {
     // Imprinted curves (B-rep edge ids, ascending) the field does not follow: they emit no sheet
     // and block faces run across them (the hex mesh will not follow them either).
     std::vector<int> ignored_imprints;
+    // Snapped paths (indices into the paths given) on a convex surface: they emit no sheet, and the
+    // curtain below each end on a curved concave curve has a corner line that does
+    // (docs/algorithms.md#curtain-corners). `curtain_corners` counts those lines.
+    std::vector<int> convex_paths;
+    int curtain_corners = 0;
     double h = 0;                  // mean mesh edge length used as the unit of the options
     double seconds = 0;            // total wall clock
     double seconds_sheets = 0, seconds_partition = 0, seconds_validation = 0;

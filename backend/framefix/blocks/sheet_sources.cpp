@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 #include "framefix/frame_field/projection.h"
 #include "framefix/streamlines/feature_seeds.h"
@@ -9,6 +10,13 @@
 namespace framefix {
 
 namespace {
+
+// A snapped path on a surface bending away from the solid by more than this per h (radius below
+// 50 h) emits no sheet: the bulge (the groove's island, a dome, a boss) is one block whose face
+// the path splits, and the layers turn at the corner lines of the curtain below it
+// (docs/algorithms.md#curtain-corners). On a flat or concave surface (the notch) the path's
+// sheets cut the solid.
+constexpr double kConvexPathBend = 0.02;
 
 Eigen::Vector3d axis(const FrameField& field, int vert, int k) {
     return field.axes.row(vert).segment<3>(3 * k).transpose();
@@ -66,7 +74,67 @@ std::vector<Eigen::Vector3d> separatrix_directions(const TetMesh& mesh, const Fr
     return zeros;
 }
 
+// Normal curvature of the surface across a snapped path (1 / model units; > 0 convex, < 0 concave,
+// seen from the solid): at its vertices off feature curves, (n_q - n_v) . (q - v) / |q - v|^2
+// summed over the boundary neighbours q off the path.
+double path_bend(const TetMesh& mesh, const std::vector<Eigen::Vector3d>& vert_normal, const std::vector<char>& on_feature,
+                 const std::vector<int>& path) {
+    std::unordered_set<int> on_path(path.begin(), path.end());
+    double num = 0, den = 0;
+    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b)
+        for (int k = 0; k < 3; ++k) {
+            const int v = mesh.boundary_faces(b, k);
+            if (!on_path.count(v) || on_feature[v]) continue;
+            for (int o = 1; o < 3; ++o) {
+                const int q = mesh.boundary_faces(b, (k + o) % 3);
+                if (on_path.count(q)) continue;
+                const Eigen::Vector3d d = (mesh.points.row(q) - mesh.points.row(v)).transpose();
+                num += (unit_or_zero(vert_normal[q]) - unit_or_zero(vert_normal[v])).dot(d);
+                den += d.squaredNorm();
+            }
+        }
+    return den > 0 ? num / den : 0;
+}
+
+// The chain of a closed feature curve (a circle) ends next to where it starts: its two end
+// seeds are no further apart than 1.5 of its longest step.
+bool closed_chain(const std::vector<FeatureSeed>& S) {
+    if (S.size() < 4) return false;
+    double step = 0;
+    for (size_t i = 1; i < S.size(); ++i) step = std::max(step, (S[i].point - S[i - 1].point).norm());
+    return (S.front().point - S.back().point).norm() <= 1.5 * step;
+}
+
+struct BoundaryNormals {
+    std::vector<Eigen::Vector3d> normal;  // outward area normal per vertex (zero inside)
+    std::vector<char> on_feature;         // vertex on a feature curve
+};
+
+BoundaryNormals boundary_normals(const TetMesh& mesh, const FeatureSet& features) {
+    const int nv = mesh.num_vertices();
+    BoundaryNormals out{std::vector<Eigen::Vector3d>(nv, Eigen::Vector3d::Zero()), std::vector<char>(nv, 0)};
+    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) {
+        const Eigen::Vector3i f = mesh.boundary_faces.row(b).transpose();
+        const Eigen::Vector3d n = (mesh.points.row(f[1]) - mesh.points.row(f[0]))
+                                      .cross(mesh.points.row(f[2]) - mesh.points.row(f[0]))
+                                      .transpose();
+        for (int k = 0; k < 3; ++k) out.normal[f[k]] += n;
+    }
+    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
+        if (features.valence_of(mesh.edge_tags[e]) > 0) out.on_feature[mesh.feature_edges(e, 0)] = out.on_feature[mesh.feature_edges(e, 1)] = 1;
+    return out;
+}
+
 }  // namespace
+
+std::vector<char> convex_paths(const TetMesh& mesh, const FeatureSet& features, const std::vector<SnappedPath>& paths,
+                               double h) {
+    const BoundaryNormals bn = boundary_normals(mesh, features);
+    std::vector<char> out(paths.size(), 0);
+    for (size_t pi = 0; pi < paths.size(); ++pi)
+        out[pi] = path_bend(mesh, bn.normal, bn.on_feature, paths[pi].vertices) * h > kConvexPathBend;
+    return out;
+}
 
 std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
                                           const TetLocator& locator, double h, const BlockOptions& options) {
@@ -93,6 +161,7 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
             seed.directions = separatrix_directions(mesh, field, locator, seed.point, seed.tangent, options.seed_radius * h);
             src.seeds.push_back(std::move(seed));
         }
+        src.closed = c.closed;
         for (int e = 0; e < 2; ++e)
             src.boundary_end[e] = !c.closed && c.ends[e] >= 0 && c.ends[e] < int(graph.nodes.size()) &&
                                   graph.nodes[c.ends[e]].boundary;
@@ -123,20 +192,11 @@ std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& featur
 }
 
 std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features, const FrameField& field,
-                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths) {
-    const int nv = mesh.num_vertices();
-    std::vector<Eigen::Vector3d> vert_normal(nv, Eigen::Vector3d::Zero());  // outward area normals
-    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b) {
-        const Eigen::Vector3i f = mesh.boundary_faces.row(b).transpose();
-        const Eigen::Vector3d n = (mesh.points.row(f[1]) - mesh.points.row(f[0]))
-                                      .cross(mesh.points.row(f[2]) - mesh.points.row(f[0]))
-                                      .transpose();
-        for (int k = 0; k < 3; ++k) vert_normal[f[k]] += n;
-    }
-    std::vector<char> on_feature(nv, 0);
-    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
-        if (features.valence_of(mesh.edge_tags[e]) > 0) on_feature[mesh.feature_edges(e, 0)] = on_feature[mesh.feature_edges(e, 1)] = 1;
-
+                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths,
+                                         const std::vector<char>& convex) {
+    const BoundaryNormals bn = boundary_normals(mesh, features);
+    const std::vector<Eigen::Vector3d>& vert_normal = bn.normal;
+    const std::vector<char>& on_feature = bn.on_feature;
     std::vector<SheetSource> out;
     std::vector<int> edges = imprints;
     for (const EdgeFeature& e : features.edges)
@@ -145,15 +205,16 @@ std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& 
         SheetSource src;
         src.kind = curve.valence == 2 ? SheetSource::Imprinted : SheetSource::Concave;
         src.name = (curve.valence == 2 ? "imprinted:" : "concave:") + std::to_string(curve.edge);
-        src.boundary_end[0] = src.boundary_end[1] = true;
         for (const FeatureSeed& f : curve.seeds) src.seeds.push_back({f.point, f.tangent, f.directions});
+        src.closed = closed_chain(curve.seeds);
+        src.boundary_end[0] = src.boundary_end[1] = !src.closed;
         out.push_back(std::move(src));
     }
 
     for (size_t pi = 0; pi < paths.size(); ++pi) {
         const std::vector<int>& V = paths[pi].vertices;
         const int m = int(V.size());
-        if (m < 2) continue;
+        if (m < 2 || convex[pi]) continue;
         SheetSource src;
         src.kind = SheetSource::Snapped;
         src.name = "snapped:" + std::to_string(pi);

@@ -14,6 +14,7 @@ struct SheetSeed {
     Eigen::Vector3d point = Eigen::Vector3d::Zero();    // on the source curve, model units
     Eigen::Vector3d tangent = Eigen::Vector3d::Zero();  // unit tangent of the source curve
     std::vector<Eigen::Vector3d> directions;            // unit start directions, one per sheet
+    bool continue_jumps = true;  // a direction jump at this seed starts a cross extension
 };
 
 struct SheetSource {
@@ -22,6 +23,9 @@ struct SheetSource {
     std::string name;
     std::vector<SheetSeed> seeds;      // in curve order, about one per h
     bool boundary_end[2] = {false, false};  // source end lies on the boundary: extend the sheet past it
+    // A closed curve (a circle, a loop): its first and last seeds are neighbours. The sheet is
+    // zipped across them and has no end to extend or continue.
+    bool closed = false;
 };
 
 // Singular curves (not kind Other, >= 3 triangles): seeds every seed_spacing h on the polyline,
@@ -36,11 +40,20 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
 // no reason to follow it. B-rep edge ids, ascending.
 std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& features, const FrameField& field);
 
+// Per snapped path: does it lie on a convex surface, bending away from the solid by more than
+// kConvexPathBend per h across the path? Such a path emits no sheet of its own: the bulge (the
+// groove's island, a dome, a boss) is one block whose face the path splits, and the hex layers
+// turn at the corner line of the curtain below it instead (curtain_corners.h).
+std::vector<char> convex_paths(const TetMesh& mesh, const FeatureSet& features, const std::vector<SnappedPath>& paths,
+                               double h);
+
 // Concave feature curves (valence 3): one seed per curve vertex, directions = the frame axes
 // closest to -n1, -n2 (the inward continuations of the two faces). Followed imprinted curves
 // (`imprints`): one direction, the axis closest to -n. Snapped paths: one seed per path vertex,
-// directions = the two axes with a.n < -0.3 (the 45 deg path frame's inward axes).
+// directions = the two axes with a.n < -0.3 (the 45 deg path frame's inward axes); paths flagged
+// in `convex` emit none.
 std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features, const FrameField& field,
-                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths);
+                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths,
+                                         const std::vector<char>& convex);
 
 }  // namespace framefix

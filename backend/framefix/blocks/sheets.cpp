@@ -235,10 +235,12 @@ void SheetTracer::trace_seeds() {
 // skipped, up to 2 seeds ahead).
 void SheetTracer::zip_seeds(int si) {
     const std::vector<SheetSeed>& S = sources_[si].seeds;
-    for (int ki = 0; ki + 1 < int(S.size()); ++ki)
+    const int n = int(S.size()), last = sources_[si].closed ? n : n - 1;  // a closed one wraps round
+    for (int ki = 0; ki < last; ++ki)
         for (int di = 0; di < int(S[ki].directions.size()); ++di) {
             const Eigen::Vector3d& a = S[ki].directions[di];
-            for (int kj = ki + 1; kj < std::min(ki + 4, int(S.size())); ++kj) {
+            for (int kk = ki + 1; kk < std::min(ki + 4, sources_[si].closed ? ki + n : n); ++kk) {
+                const int kj = kk % n;
                 int best = -1;
                 for (int dj = 0; dj < int(S[kj].directions.size()); ++dj)
                     if (best < 0 || a.dot(S[kj].directions[dj]) > a.dot(S[kj].directions[best])) best = dj;
@@ -294,12 +296,16 @@ void SheetTracer::extend_past_boundary_ends(int si) {
 void SheetTracer::collect_cross_jobs(int si) {
     const std::vector<SheetSeed>& S = sources_[si].seeds;
     if (S.size() < 2) return;
-    for (int ki = 0; ki + 1 < int(S.size()); ++ki) {
+    const int n = int(S.size()), last = sources_[si].closed ? n : n - 1;  // a closed one wraps round
+    for (int ki = 0; ki < last; ++ki) {
+        const int kn = (ki + 1) % n;
+        if (!S[ki].continue_jumps || !S[kn].continue_jumps) continue;
         for (int di = 0; di < int(S[ki].directions.size()); ++di)
-            if (!matched(S[ki].directions[di], S[ki + 1].directions)) jobs_.push_back({si, ki, di, +1});
-        for (int dj = 0; dj < int(S[ki + 1].directions.size()); ++dj)
-            if (!matched(S[ki + 1].directions[dj], S[ki].directions)) jobs_.push_back({si, ki + 1, dj, -1});
+            if (!matched(S[ki].directions[di], S[kn].directions)) jobs_.push_back({si, ki, di, +1});
+        for (int dj = 0; dj < int(S[kn].directions.size()); ++dj)
+            if (!matched(S[kn].directions[dj], S[ki].directions)) jobs_.push_back({si, kn, dj, -1});
     }
+    if (sources_[si].closed) return;
     for (int di = 0; di < int(S.front().directions.size()); ++di) jobs_.push_back({si, 0, di, -1});
     for (int di = 0; di < int(S.back().directions.size()); ++di) jobs_.push_back({si, int(S.size()) - 1, di, +1});
 }

@@ -171,6 +171,8 @@ json blocks_json(const BlockDecomposition& b) {
             {"flat_corners", b.flat_corners},
             {"flat_edges", b.flat_edges},
             {"ignored_imprints", b.ignored_imprints},
+            {"convex_paths", b.convex_paths},
+            {"curtain_corners", b.curtain_corners},
             {"blocks", blocks},
             {"neighbour_pairs", pairs},
             {"seconds", {{"sheets", b.seconds_sheets}, {"partition", b.seconds_partition},

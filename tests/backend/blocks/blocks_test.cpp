@@ -139,6 +139,54 @@ TEST(BlocksOnSamples, SnappedNotchIsSevenConformingBlocks) {
     expect_all_valid(r.blocks);
     EXPECT_EQ(r.blocks.pairs, 9);
     EXPECT_EQ(r.blocks.conforming_pairs, 9);
+    // The path lies on the pocket's concave wall: it cuts the solid itself, no curtain corner.
+    EXPECT_TRUE(r.blocks.convex_paths.empty());
+    EXPECT_EQ(r.blocks.curtain_corners, 0);
+    expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
+}
+
+// docs/algorithms.md#curtain-corners: the dome's snapped paths lie on a convex surface and emit
+// no sheet; the four that reach the base circle give its curtain four corner lines. The part is
+// then an O-grid of 9 columns around and below the dome, and the dome one block: 10 hexahedra.
+TEST(BlocksOnSamples, SnappedSmallDomeIsAnOGridUnderOneDomeBlock) {
+    const SampleRun& r = run("half_sphere_box_small", 0);
+    ASSERT_FALSE(r.paths.empty());
+    EXPECT_EQ(r.blocks.convex_paths.size(), r.paths.size());
+    EXPECT_EQ(r.blocks.curtain_corners, 4);
+    EXPECT_EQ(r.blocks.count, 10);
+    expect_all_valid(r.blocks);
+    EXPECT_EQ(r.blocks.conforming_pairs, r.blocks.pairs);
+    int above = 0;  // blocks above the box top (z = 0): the dome only
+    for (const BlockInfo& b : r.blocks.blocks) above += b.centroid.z() > 0;
+    EXPECT_EQ(above, 1);
+    expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
+}
+
+// The groove's two snapped paths: the one on the island's wall (radius 0.4 about the corner
+// (1, 1)) is convex and emits no sheet, so the island above the groove floor stays one valid
+// block; the one on the outer wall (radius 0.6) is concave and keeps its sheets.
+TEST(BlocksOnSamples, GrooveIslandPathIsConvexAndTheIslandOneBlock) {
+    const SampleRun& r = run("groove", 0);
+    ASSERT_EQ(r.paths.size(), 2u);
+    ASSERT_EQ(r.blocks.convex_paths.size(), 1u);
+    const Points& P = r.result.mesh->tets.points;
+    for (size_t pi = 0; pi < r.paths.size(); ++pi) {
+        const Eigen::Vector3d mid = P.row(r.paths[pi].vertices[r.paths[pi].vertices.size() / 2]).transpose();
+        const double radius = (mid.head<2>() - Eigen::Vector2d(1, 1)).norm();
+        const bool convex = r.blocks.convex_paths.front() == int(pi);
+        EXPECT_NEAR(radius, convex ? 0.4 : 0.6, 0.02) << "path " << pi;
+    }
+    EXPECT_EQ(r.blocks.curtain_corners, 1);  // the island path's foot on the floor arc
+    int island = -1;
+    for (int b = 0; b < r.blocks.count; ++b) {
+        const Eigen::Vector3d c = r.blocks.blocks[b].centroid;
+        if (c.z() > 0.8 && (c.head<2>() - Eigen::Vector2d(1, 1)).norm() < 0.4) island = b;
+    }
+    ASSERT_GE(island, 0);
+    EXPECT_TRUE(r.blocks.blocks[island].valid) << r.blocks.blocks[island].reason;
+    bool corner_sheet = false;
+    for (const std::string& k : r.blocks.sheets.source_kind) corner_sheet |= k.rfind("curtain:", 0) == 0;
+    EXPECT_TRUE(corner_sheet);
     expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
 }
 
