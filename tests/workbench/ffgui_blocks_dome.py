@@ -49,7 +49,7 @@ def scenario(h):
     h.check(report["conforming_pairs"] == report["pairs"] > 0,
             "every neighbour pair conforms: %d of %d" % (report["conforming_pairs"], report["pairs"]))
     colours = [tuple(round(c, 3) for c in col[:3]) for col in blocks.BlockColors]
-    clashes = [p["blocks"] for p in report["neighbour_pairs"] if colours[p["blocks"][0]] == colours[p["blocks"][1]]]
+    clashes = [(b["id"], n) for b in report["blocks"] for n in b["neighbours"] if colours[b["id"]] == colours[n]]
     h.check(not clashes, "neighbours in distinct colours (same colour: %s)" % clashes)
     hexes = [o for o in curves.InList if isinstance(getattr(o, "Proxy", None), HexMesh)]
     h.check(len(hexes) == 1 and hexes[0].FemMesh.HexaCount == report_of(curves)["hexmesh"]["hexes"] > 0,

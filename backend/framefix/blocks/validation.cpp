@@ -86,10 +86,14 @@ int longest_contact(const std::map<int, double>& contact) {
     return best;
 }
 
+// Merges per cleaning rule, one per round. A dome's block collects dozens of staircase scraps
+// along its rim; 30 rounds left one of them as a seventh face on half_sphere_box.
+constexpr int kCleanRounds = 200;
+
 // docs/algorithms.md#block-faces-and-patch-cleaning: tiny patches, thin staircase strips, and bevel strips between two ~90 deg flanks.
 void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, const Adjacency& adj, double h,
                    const BlockOptions& o, std::vector<int>& patch) {
-    for (int it = 0; it < 30; ++it) {  // tiny patches, smallest first
+    for (int it = 0; it < kCleanRounds; ++it) {  // tiny patches, smallest first
         const int n = renumber(patch);
         const PatchStats s = patch_stats(S, adj, patch, n);
         int small = -1;
@@ -103,7 +107,7 @@ void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, 
         const int target = longest_contact(s.contact[small]);
         for (int& p : patch) if (p == small) p = target;
     }
-    for (int it = 0; it < 30 && o.thin_width > 0; ++it) {  // strips one tet wide
+    for (int it = 0; it < kCleanRounds && o.thin_width > 0; ++it) {  // strips one tet wide
         const int n = renumber(patch);
         const PatchStats s = patch_stats(S, adj, patch, n);
         int thin = -1;
@@ -166,10 +170,32 @@ void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, 
     renumber(patch);
 }
 
+// Patches whose majority label is in `dissolve` (neighbours that saw the contact as a sliver)
+// merge into the patch they share the longest boundary with.
+void dissolve_patches(const std::vector<BoundaryTriangle>& S, const Adjacency& adj, const std::vector<int>& dissolve,
+                      std::vector<int>& patch) {
+    for (int it = 0; it < 30 && !dissolve.empty(); ++it) {
+        const int n = renumber(patch);
+        const PatchStats s = patch_stats(S, adj, patch, n);
+        std::vector<std::map<int, int>> votes(n);
+        for (size_t i = 0; i < S.size(); ++i) votes[patch[i]][S[i].label] += 1;
+        int gone = -1;
+        for (int p = 0; p < n && gone < 0; ++p) {
+            int label = 0, most = 0;
+            for (auto [l, c] : votes[p]) if (c > most) most = c, label = l;
+            if (!s.contact[p].empty() && std::find(dissolve.begin(), dissolve.end(), label) != dissolve.end()) gone = p;
+        }
+        if (gone < 0) break;
+        const int target = longest_contact(s.contact[gone]);
+        for (int& p : patch) if (p == gone) p = target;
+    }
+    renumber(patch);
+}
+
 }  // namespace
 
 BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, double h,
-                          const BlockOptions& o, BlockInfo& info) {
+                          const BlockOptions& o, BlockInfo& info, const std::vector<int>& dissolve) {
     BlockFaces out;
     const int nf = int(S.size());
     const Adjacency adj = adjacency(mesh, S);
@@ -179,6 +205,7 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
     for (int i = 0; i < nf; ++i) label[i] = S[i].label;
     std::vector<int> patch = components(nf, adj, label);
     clean_patches(mesh, S, adj, h, o, patch);
+    dissolve_patches(S, adj, dissolve, patch);
     const int np = nf ? *std::max_element(patch.begin(), patch.end()) + 1 : 0;
     info.faces = np;
 
@@ -311,6 +338,16 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
     info.valid = true;
     for (const auto& [ok, why] : tests)
         if (!ok) { info.valid = false, info.reason = why; break; }
+    return out;
+}
+
+std::vector<std::vector<int>> one_sided_contacts(const std::vector<BlockFaces>& faces,
+                                                 const std::vector<std::map<int, int>>& shared) {
+    auto patches = [&](int b, int label) { return std::count(faces[b].label.begin(), faces[b].label.end(), label); };
+    std::vector<std::vector<int>> out(faces.size());
+    for (int a = 0; a < int(faces.size()); ++a)
+        for (auto [b, n] : shared[a])
+            if (patches(a, b) > 0 && patches(b, a) == 0) out[a].push_back(b);
     return out;
 }
 
