@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <tuple>
 #include <memory>
 
 #include "backend/corrections/cube_frames.h"
@@ -25,15 +26,17 @@ struct SampleRun {
     BlockDecomposition blocks;
 };
 
-// One pipeline run per sample and mesh size, shared by the tests of this file.
-const SampleRun& run(const std::string& name, double size) {
-    static std::map<std::pair<std::string, double>, std::unique_ptr<SampleRun>> cache;
-    auto& slot = cache[{name, size}];
+// One pipeline run per sample and mesh size (size 0: the default size times `factor`), shared by
+// the tests of this file.
+const SampleRun& run(const std::string& name, double size, double factor = 1) {
+    static std::map<std::tuple<std::string, double, double>, std::unique_ptr<SampleRun>> cache;
+    auto& slot = cache[{name, size, factor}];
     if (!slot) {
         slot = std::make_unique<SampleRun>();
         RunOptions options;
         options.stop_after = Stage::blocks;
         options.mesh.size = size;
+        options.size_factor = factor;
         slot->result = framefix::run(RunInput::file(sample(name)), options);
         if (slot->result.correction) slot->paths = slot->result.correction->snap.paths;
         slot->blocks = *slot->result.blocks;
@@ -160,6 +163,22 @@ TEST(BlocksOnSamples, SnappedSmallDomeIsAnOGridUnderOneDomeBlock) {
     for (const BlockInfo& b : r.blocks.blocks) above += b.centroid.z() > 0;
     EXPECT_EQ(above, 1);
     expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
+}
+
+// Every block valid and every pair conforming at the default size and at 0.7 x: the paper's
+// half-sphere box (the dome over an O-grid, 10 blocks) and the wide groove (15 blocks: the
+// island over its column, the ring below the groove floor cut in three by the island's curtain
+// corner, the outer part cut by the outer path's sheets and by that corner's).
+TEST(BlocksOnSamples, HalfSphereBoxAndWideGrooveAreValidAtTwoSizes) {
+    for (auto [name, count] : {std::pair{"half_sphere_box", 10}, std::pair{"groove_wide", 15}})
+        for (double f : {1.0, 0.7}) {
+            SCOPED_TRACE(std::string(name) + " at " + std::to_string(f));
+            const SampleRun& r = run(name, 0, f);
+            EXPECT_EQ(r.blocks.count, count);
+            expect_all_valid(r.blocks);
+            EXPECT_EQ(r.blocks.conforming_pairs, r.blocks.pairs);
+            expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
+        }
 }
 
 // The groove's two snapped paths: the one on the island's wall (radius 0.4 about the corner
