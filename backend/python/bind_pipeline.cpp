@@ -124,7 +124,11 @@ void bind_blocks(py::module_& m) {
         .def_readonly("count", &BlockDecomposition::count)
         .def_readonly("valid", &BlockDecomposition::valid)
         .def_readonly("conforming_pairs", &BlockDecomposition::conforming_pairs)
-        .def_readonly("pairs", &BlockDecomposition::pairs);
+        .def_readonly("pairs", &BlockDecomposition::pairs)
+        .def_readonly("convex_paths", &BlockDecomposition::convex_paths,
+                      "indices of the snapped paths on a convex surface (they emit no sheet)")
+        .def_readonly("curtain_corners", &BlockDecomposition::curtain_corners,
+                      "corner lines below those paths' feet that emit sheets instead");
 }
 
 void bind_hexmesh(py::module_& m) {

@@ -91,6 +91,16 @@ def test_blocks_of_the_l_prism_without_correction():
     assert set(np.unique(r.blocks.tet_block)) == {0, 1, 2}
 
 
+def test_blocks_of_the_half_sphere_box_report_its_convex_paths():
+    """Snapping puts the dome's 3-5 curves onto the dome: every path is convex, four reach the base
+    circle and give its curtain four corner lines; the dome over an O-grid is 10 valid blocks."""
+    r = framefix.build_blocks(str(SAMPLES / "half_sphere_box.step"), method="snap")
+    assert sorted(r.blocks.convex_paths) == list(range(len(r.correction.snapped_paths)))
+    assert r.blocks.curtain_corners == 4
+    assert (r.blocks.count, r.blocks.valid) == (10, 10)
+    assert framefix.report(r)["blocks"]["convex_paths"] == list(r.blocks.convex_paths)
+
+
 def test_a_shape_runs_like_its_file():
     shape = framefix.load_shape(CUBE)
     a = framefix.report(framefix.run(shape, "mesh", size_factor=COARSE))
