@@ -1,6 +1,7 @@
 // Geometric queries on a model, for tests and for corrections that snap to B-rep entities.
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepClass_FaceClassifier.hxx>
 #include <BRepExtrema_DistShapeShape.hxx>
 #include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
@@ -81,11 +82,19 @@ double distance_to_face(const BrepModel& model, int face, const Eigen::Vector3d&
 Eigen::Vector3d closest_point_on_face(const BrepModel& model, int face, const Eigen::Vector3d& p) {
     FF_ASSERT(model.shape && face >= 1 && face <= model.num_faces);
     return occt_call("brep", "projecting onto Face" + std::to_string(face), [&] {
-        // The face's untrimmed surface: the points projected lie on the face already (within a
-        // mesh size), so its trim does not matter, and it is much cheaper than BRepExtrema.
-        ShapeAnalysis_Surface surface(BRep_Tool::Surface(TopoDS::Face(model.shape->faces(face))));
+        // The face's untrimmed surface first: the points projected lie on the face already
+        // (within a mesh size), and it is much cheaper than BRepExtrema. A point beyond the trim
+        // (a hex row next to a concave boundary curve, as on the dome's base circle at 0.7 x)
+        // would land outside the face: then the trimmed face's closest point, on its edge.
+        const TopoDS_Face& f = TopoDS::Face(model.shape->faces(face));
+        ShapeAnalysis_Surface surface(BRep_Tool::Surface(f));
         const gp_Pnt q(p.x(), p.y(), p.z());
-        const gp_Pnt r = surface.Value(surface.ValueOfUV(q, Precision::Confusion()));
+        const gp_Pnt2d uv = surface.ValueOfUV(q, Precision::Confusion());
+        gp_Pnt r = surface.Value(uv);
+        if (BRepClass_FaceClassifier(f, uv, BRep_Tool::Tolerance(f)).State() == TopAbs_OUT) {
+            BRepExtrema_DistShapeShape d(BRepBuilderAPI_MakeVertex(q).Vertex(), f);
+            if (d.IsDone() && d.NbSolution() > 0) r = d.PointOnShape2(1);
+        }
         return Eigen::Vector3d(r.X(), r.Y(), r.Z());
     });
 }
