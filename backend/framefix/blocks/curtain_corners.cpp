@@ -23,7 +23,7 @@ struct Corner {
     Eigen::Vector3d point, along, dir1, dir2;  // path end, curtain direction, the two sheet directions
 };
 
-// The corner at a path end (its last vertex `end`, previous vertex `prev`) on `curve`'s seed c.
+// The corner at a path end: the path's last vertex is `curve`'s seed c, `prev` the vertex before it.
 bool corner_at(const TetMesh& mesh, const FeatureSeeds& curve, int c, int prev, Corner& out) {
     const std::vector<FeatureSeed>& S = curve.seeds;
     const int n = int(S.size());
@@ -31,7 +31,7 @@ bool corner_at(const TetMesh& mesh, const FeatureSeeds& curve, int c, int prev, 
     const Eigen::Vector3d u = (S[c].point - mesh.points.row(prev).transpose()).normalized();
     const Eigen::Vector3d& d = S[c].directions[0].dot(u) >= S[c].directions[1].dot(u) ? S[c].directions[0] : S[c].directions[1];
     if (!u.allFinite() || d.dot(u) < kIntoCurtainCos) return false;
-    const bool closed = n > 3 && (S.front().point - S.back().point).norm() < 2 * (S[1].point - S[0].point).norm();
+    const bool closed = closed_chain(S);
     auto tangent = [&](int i) { return closed ? S[(i + n) % n].tangent : S[std::clamp(i, 0, n - 1)].tangent; };
     Eigen::Vector3d bend = tangent(c + kBendReach) - tangent(c - kBendReach);  // towards the centre of curvature
     bend -= bend.dot(d) * d;

@@ -96,15 +96,6 @@ double path_bend(const TetMesh& mesh, const std::vector<Eigen::Vector3d>& vert_n
     return den > 0 ? num / den : 0;
 }
 
-// The chain of a closed feature curve (a circle) ends next to where it starts: its two end
-// seeds are no further apart than 1.5 of its longest step.
-bool closed_chain(const std::vector<FeatureSeed>& S) {
-    if (S.size() < 4) return false;
-    double step = 0;
-    for (size_t i = 1; i < S.size(); ++i) step = std::max(step, (S[i].point - S[i - 1].point).norm());
-    return (S.front().point - S.back().point).norm() <= 1.5 * step;
-}
-
 struct BoundaryNormals {
     std::vector<Eigen::Vector3d> normal;  // outward area normal per vertex (zero inside)
     std::vector<char> on_feature;         // vertex on a feature curve
@@ -126,6 +117,13 @@ BoundaryNormals boundary_normals(const TetMesh& mesh, const FeatureSet& features
 }
 
 }  // namespace
+
+bool closed_chain(const std::vector<FeatureSeed>& S) {
+    if (S.size() < 4) return false;
+    double step = 0;
+    for (size_t i = 1; i < S.size(); ++i) step = std::max(step, (S[i].point - S[i - 1].point).norm());
+    return (S.front().point - S.back().point).norm() <= 1.5 * step;
+}
 
 std::vector<char> convex_paths(const TetMesh& mesh, const FeatureSet& features, const std::vector<SnappedPath>& paths,
                                double h) {

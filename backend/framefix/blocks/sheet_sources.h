@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "framefix/blocks/blocks.h"
+#include "framefix/streamlines/feature_seeds.h"
 #include "framefix/streamlines/tet_locator.h"
 
 namespace framefix {
@@ -39,6 +40,10 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
 // imprint (box with an arc after snapping: "as if there were no imprinted curve") gives the blocks
 // no reason to follow it. B-rep edge ids, ascending.
 std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& features, const FrameField& field);
+
+// The chain of a closed feature curve (a circle) ends next to where it starts: its two end seeds
+// are no further apart than 1.5 of its longest step.
+bool closed_chain(const std::vector<FeatureSeed>& seeds);
 
 // Per snapped path: does it lie on a convex surface, bending away from the solid by more than
 // kConvexPathBend per h across the path? Such a path emits no sheet of its own: the bulge (the
