@@ -157,17 +157,13 @@ bool merge_lenses(const std::vector<std::map<int, int>>& shared, BlockDecomposit
 constexpr double kMuteReach = 3;
 
 // Sources of the corner lines below the convex paths' feet (docs/algorithms.md#curtain-corners).
-void add_curtain_corners(const TetMesh& mesh, const FeatureSet& features, const FrameField& field,
-                         const TetLocator& locator, const std::vector<SnappedPath>& paths,
+void add_curtain_corners(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,
+                         const std::vector<FeatureSeeds>& curves, const std::vector<SnappedPath>& paths,
                          const std::vector<char>& convex, const Points& singular, double h,
                          const BlockOptions& options, std::vector<SheetSource>& sources, BlockDecomposition& out) {
-    std::vector<int> concave;
-    for (const EdgeFeature& e : features.edges)
-        if (e.valence == 3) concave.push_back(e.edge);
     TraceOptions trace;
     trace.step = options.step * h, trace.stop_distance = options.stop_distance * h, trace.singular_points = singular;
-    std::vector<SheetSource> corners =
-        curtain_corner_sources(mesh, field, locator, feature_seeds(mesh, features, field, concave), paths, convex, h, trace);
+    std::vector<SheetSource> corners = curtain_corner_sources(mesh, field, locator, curves, paths, convex, h, trace);
     out.curtain_corners = int(corners.size());
     mute_jumps_near_corners(sources, corners, kMuteReach * h);
     sources.insert(sources.end(), corners.begin(), corners.end());
@@ -194,10 +190,14 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     const std::vector<char> convex = convex_paths(mesh, features, paths, h);
     for (int i = 0; i < int(convex.size()); ++i)
         if (convex[i]) out.convex_paths.push_back(i);
-    std::vector<SheetSource> feature = feature_sources(mesh, features, field, imprints, paths, convex);
+    std::vector<int> edges = imprints;  // the followed imprints and the concave curves
+    for (const EdgeFeature& e : features.edges)
+        if (e.valence == 3) edges.push_back(e.edge);
+    const std::vector<FeatureSeeds> curves = feature_seeds(mesh, features, field, edges);
+    std::vector<SheetSource> feature = feature_sources(mesh, features, field, curves, paths, convex);
     sources.insert(sources.end(), feature.begin(), feature.end());
     const Points singular = singular_points(graph);
-    if (options.curtain_corners) add_curtain_corners(mesh, features, field, locator, paths, convex, singular, h, options, sources, out);
+    if (options.curtain_corners) add_curtain_corners(mesh, field, locator, curves, paths, convex, singular, h, options, sources, out);
     out.sheets = build_sheets(mesh, field, locator, sources, singular, h, options, out.stats);
     out.seconds_sheets = since(t0);
 

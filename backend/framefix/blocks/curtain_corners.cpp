@@ -73,7 +73,8 @@ std::vector<SheetSource> curtain_corner_sources(const TetMesh& mesh, const Frame
                                                 const TraceOptions& trace) {
     std::unordered_map<int, std::pair<int, int>> seed_of;  // mesh vertex -> (curve, seed)
     for (int ci = 0; ci < int(concave.size()); ++ci)
-        for (int k = 0; k < int(concave[ci].seeds.size()); ++k) seed_of[concave[ci].seeds[k].vertex] = {ci, k};
+        if (concave[ci].valence == 3)
+            for (int k = 0; k < int(concave[ci].seeds.size()); ++k) seed_of[concave[ci].seeds[k].vertex] = {ci, k};
     std::vector<SheetSource> out;
     for (size_t pi = 0; pi < paths.size(); ++pi) {
         const std::vector<int>& V = paths[pi].vertices;

@@ -17,7 +17,7 @@
 namespace framefix {
 
 // One source per end of a convex snapped path (`convex`, from convex_paths) on a curved concave
-// curve of `concave` (FeatureSeeds of the valence-3 curves). A path that emits sheets itself
+// curve of `concave` (FeatureSeeds; curves of other valences are skipped). A path that emits sheets itself
 // carries them past its end already: seeds every h along the corner line, two fixed directions. `trace` traces
 // the line (the sheets' step, stop distance and singular points).
 std::vector<SheetSource> curtain_corner_sources(const TetMesh& mesh, const FrameField& field, const TetLocator& locator,

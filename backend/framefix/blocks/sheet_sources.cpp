@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_set>
+#include <unordered_map>
 
 #include "framefix/frame_field/projection.h"
 #include "framefix/streamlines/feature_seeds.h"
@@ -74,28 +74,6 @@ std::vector<Eigen::Vector3d> separatrix_directions(const TetMesh& mesh, const Fr
     return zeros;
 }
 
-// Normal curvature of the surface across a snapped path (1 / model units; > 0 convex, < 0 concave,
-// seen from the solid): at its vertices off feature curves, (n_q - n_v) . (q - v) / |q - v|^2
-// summed over the boundary neighbours q off the path.
-double path_bend(const TetMesh& mesh, const std::vector<Eigen::Vector3d>& vert_normal, const std::vector<char>& on_feature,
-                 const std::vector<int>& path) {
-    std::unordered_set<int> on_path(path.begin(), path.end());
-    double num = 0, den = 0;
-    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b)
-        for (int k = 0; k < 3; ++k) {
-            const int v = mesh.boundary_faces(b, k);
-            if (!on_path.count(v) || on_feature[v]) continue;
-            for (int o = 1; o < 3; ++o) {
-                const int q = mesh.boundary_faces(b, (k + o) % 3);
-                if (on_path.count(q)) continue;
-                const Eigen::Vector3d d = (mesh.points.row(q) - mesh.points.row(v)).transpose();
-                num += (unit_or_zero(vert_normal[q]) - unit_or_zero(vert_normal[v])).dot(d);
-                den += d.squaredNorm();
-            }
-        }
-    return den > 0 ? num / den : 0;
-}
-
 struct BoundaryNormals {
     std::vector<Eigen::Vector3d> normal;  // outward area normal per vertex (zero inside)
     std::vector<char> on_feature;         // vertex on a feature curve
@@ -127,10 +105,34 @@ bool closed_chain(const std::vector<FeatureSeed>& S) {
 
 std::vector<char> convex_paths(const TetMesh& mesh, const FeatureSet& features, const std::vector<SnappedPath>& paths,
                                double h) {
+    // Normal curvature across each path (1 / model units; > 0 convex, < 0 concave, seen from the
+    // solid): at its vertices off feature curves, sum (n_q - n_v) . (q - v) / sum |q - v|^2 over the
+    // boundary neighbours q off the path. One pass over the boundary faces for all paths.
     const BoundaryNormals bn = boundary_normals(mesh, features);
+    std::unordered_map<int, std::vector<int>> paths_at;  // vertex -> the paths through it
+    for (int pi = 0; pi < int(paths.size()); ++pi)
+        for (int v : paths[pi].vertices) paths_at[v].push_back(pi);
+    auto on_path = [&](int v, int pi) {
+        const auto it = paths_at.find(v);
+        return it != paths_at.end() && std::find(it->second.begin(), it->second.end(), pi) != it->second.end();
+    };
+    std::vector<double> num(paths.size(), 0), den(paths.size(), 0);
+    for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b)
+        for (int k = 0; k < 3; ++k) {
+            const int v = mesh.boundary_faces(b, k);
+            const auto it = paths_at.find(v);
+            if (it == paths_at.end() || bn.on_feature[v]) continue;
+            for (int pi : it->second)
+                for (int o = 1; o < 3; ++o) {
+                    const int q = mesh.boundary_faces(b, (k + o) % 3);
+                    if (on_path(q, pi)) continue;
+                    const Eigen::Vector3d d = (mesh.points.row(q) - mesh.points.row(v)).transpose();
+                    num[pi] += (unit_or_zero(bn.normal[q]) - unit_or_zero(bn.normal[v])).dot(d);
+                    den[pi] += d.squaredNorm();
+                }
+        }
     std::vector<char> out(paths.size(), 0);
-    for (size_t pi = 0; pi < paths.size(); ++pi)
-        out[pi] = path_bend(mesh, bn.normal, bn.on_feature, paths[pi].vertices) * h > kConvexPathBend;
+    for (size_t pi = 0; pi < paths.size(); ++pi) out[pi] = den[pi] > 0 && num[pi] / den[pi] * h > kConvexPathBend;
     return out;
 }
 
@@ -190,16 +192,13 @@ std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& featur
 }
 
 std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features, const FrameField& field,
-                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths,
+                                         const std::vector<FeatureSeeds>& curves, const std::vector<SnappedPath>& paths,
                                          const std::vector<char>& convex) {
     const BoundaryNormals bn = boundary_normals(mesh, features);
     const std::vector<Eigen::Vector3d>& vert_normal = bn.normal;
     const std::vector<char>& on_feature = bn.on_feature;
     std::vector<SheetSource> out;
-    std::vector<int> edges = imprints;
-    for (const EdgeFeature& e : features.edges)
-        if (e.valence == 3) edges.push_back(e.edge);
-    for (const FeatureSeeds& curve : feature_seeds(mesh, features, field, edges)) {
+    for (const FeatureSeeds& curve : curves) {
         SheetSource src;
         src.kind = curve.valence == 2 ? SheetSource::Imprinted : SheetSource::Concave;
         src.name = (curve.valence == 2 ? "imprinted:" : "concave:") + std::to_string(curve.edge);

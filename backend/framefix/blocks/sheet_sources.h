@@ -52,13 +52,13 @@ bool closed_chain(const std::vector<FeatureSeed>& seeds);
 std::vector<char> convex_paths(const TetMesh& mesh, const FeatureSet& features, const std::vector<SnappedPath>& paths,
                                double h);
 
-// Concave feature curves (valence 3): one seed per curve vertex, directions = the frame axes
-// closest to -n1, -n2 (the inward continuations of the two faces). Followed imprinted curves
-// (`imprints`): one direction, the axis closest to -n. Snapped paths: one seed per path vertex,
+// `curves`: the seeds (feature_seeds) of the concave feature curves (valence 3: one seed per curve
+// vertex, directions = the frame axes closest to -n1, -n2, the inward continuations of the two
+// faces) and of the followed imprinted curves (one direction, the axis closest to -n). Snapped paths: one seed per path vertex,
 // directions = the two axes with a.n < -0.3 (the 45 deg path frame's inward axes); paths flagged
 // in `convex` emit none.
 std::vector<SheetSource> feature_sources(const TetMesh& mesh, const FeatureSet& features, const FrameField& field,
-                                         const std::vector<int>& imprints, const std::vector<SnappedPath>& paths,
+                                         const std::vector<FeatureSeeds>& curves, const std::vector<SnappedPath>& paths,
                                          const std::vector<char>& convex);
 
 }  // namespace framefix
