@@ -170,21 +170,29 @@ void clean_patches(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, 
     renumber(patch);
 }
 
+// Per patch: the label most of its triangles carry.
+std::vector<int> majority_labels(const std::vector<BoundaryTriangle>& S, const std::vector<int>& patch, int n) {
+    std::vector<std::map<int, int>> votes(n);
+    for (size_t i = 0; i < S.size(); ++i) votes[patch[i]][S[i].label] += 1;
+    std::vector<int> out(n, 0);
+    for (int p = 0; p < n; ++p) {
+        int most = 0;
+        for (auto [l, c] : votes[p]) if (c > most) most = c, out[p] = l;
+    }
+    return out;
+}
+
 // Patches whose majority label is in `dissolve` (neighbours that saw the contact as a sliver)
 // merge into the patch they share the longest boundary with.
 void dissolve_patches(const std::vector<BoundaryTriangle>& S, const Adjacency& adj, const std::vector<int>& dissolve,
                       std::vector<int>& patch) {
-    for (int it = 0; it < 30 && !dissolve.empty(); ++it) {
+    for (int it = 0; it < kCleanRounds && !dissolve.empty(); ++it) {
         const int n = renumber(patch);
         const PatchStats s = patch_stats(S, adj, patch, n);
-        std::vector<std::map<int, int>> votes(n);
-        for (size_t i = 0; i < S.size(); ++i) votes[patch[i]][S[i].label] += 1;
+        const std::vector<int> label = majority_labels(S, patch, n);
         int gone = -1;
-        for (int p = 0; p < n && gone < 0; ++p) {
-            int label = 0, most = 0;
-            for (auto [l, c] : votes[p]) if (c > most) most = c, label = l;
-            if (!s.contact[p].empty() && std::find(dissolve.begin(), dissolve.end(), label) != dissolve.end()) gone = p;
-        }
+        for (int p = 0; p < n && gone < 0; ++p)
+            if (!s.contact[p].empty() && std::find(dissolve.begin(), dissolve.end(), label[p]) != dissolve.end()) gone = p;
         if (gone < 0) break;
         const int target = longest_contact(s.contact[gone]);
         for (int& p : patch) if (p == gone) p = target;
@@ -307,15 +315,9 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
     }
 
     // Patch labels (majority) and corners, for conformity.
-    out.label.assign(np, 0);
+    out.label = majority_labels(S, patch, np);
     out.corners.assign(np, {});
     {
-        std::vector<std::map<int, int>> votes(np);
-        for (int i = 0; i < nf; ++i) votes[patch[i]][S[i].label] += 1;
-        for (int p = 0; p < np; ++p) {
-            int most = 0;
-            for (auto [l, c] : votes[p]) if (c > most) most = c, out.label[p] = l;
-        }
         for (size_t c = 0; c < clusters.size(); ++c)
             for (int p : corner_patches[c]) out.corners[p].push_back(corner_pos[c]);
         out.cleaned.resize(nf);
