@@ -190,6 +190,11 @@ def cylinder():
     return Part.makeCylinder(0.5, 1)
 
 
+def sphere():
+    """The smooth part whose field is known: a cube inside a sphere (20 valence-3 curves, 7 blocks)."""
+    return Part.makeSphere(0.5)
+
+
 def l_prism():
     pts = [V(0, 0, 0), V(1, 0, 0), V(1, 0.5, 0), V(0.5, 0.5, 0), V(0.5, 1, 0), V(0, 1, 0), V(0, 0, 0)]
     return Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, 0.5))
@@ -198,7 +203,7 @@ def l_prism():
 SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism,
            notch_filleted, half_sphere_box_filleted, groove_filleted,
            notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow,
-           groove_wide_filleted, box_arc_wide, box_arc_small, box_arc_curved_flat, box_arc_curved_steep]
+           groove_wide_filleted, box_arc_wide, box_arc_small, box_arc_curved_flat, box_arc_curved_steep, sphere]
 
 
 def write_bad_inputs():

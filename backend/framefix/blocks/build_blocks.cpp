@@ -122,6 +122,11 @@ Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const st
         for (int t : info.tets) for (int k = 0; k < 4; ++k) verts.insert(mesh.tets(t, k));
         for (int v : verts) info.centroid += mesh.points.row(v).transpose() / double(verts.size());
     }
+    // Both sides of an interface agree: a contact one side cleaned away as a sliver is one on the
+    // other side too. Before the lens test: what is left may be a lens (the sphere's slabs).
+    const std::vector<std::vector<int>> one_sided = one_sided_contacts(v.faces, v.shared);
+    for (int b = 0; b < out.count; ++b)
+        if (!one_sided[b].empty()) v.faces[b] = validate_block(mesh, v.surface[b], h, options, out.blocks[b], one_sided[b]);
     return v;
 }
 
@@ -219,10 +224,6 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
         out.count = compact_labels(out.tet_block);
         v = validate_blocks(mesh, topo, group, h, options, out);
     }
-    // Both sides of an interface agree: a contact one side cleaned away as a sliver is one on the other side too.
-    const std::vector<std::vector<int>> one_sided = one_sided_contacts(v.faces, v.shared);
-    for (int b = 0; b < out.count; ++b)
-        if (!one_sided[b].empty()) v.faces[b] = validate_block(mesh, v.surface[b], h, options, out.blocks[b], one_sided[b]);
     out.neighbour_pairs = check_conformity(v.faces, options.conform_tolerance * h);
     for (const BlockInfo& b : out.blocks)
         out.valid += b.valid, out.flat_edges += b.flat_edges, out.flat_corners += b.flat_corners;

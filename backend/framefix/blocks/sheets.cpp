@@ -354,7 +354,11 @@ void SheetTracer::cross_extensions() {
             });
         }
     if (cp.empty()) return;
+    // A source tangent read from two seeds can be 47 degrees off the field's axis there (a
+    // snapped path's kinked end on HexMe's notch at 0.7 x): it only picks the axis.
+    trace_.start_picks_axis = true;
     const std::vector<Traced> cross = run(cp, cv, nullptr);
+    trace_.start_picks_axis = false;
     for (size_t ji = 0; ji < members.size(); ++ji) {
         const int si = job_source[ji], source = std::max(si, 0);
         std::vector<int> valid;

@@ -200,6 +200,44 @@ void dissolve_patches(const std::vector<BoundaryTriangle>& S, const Adjacency& a
     renumber(patch);
 }
 
+// Vertices in >= 3 patches joined by mesh edges, as connected components: the staircase makes a
+// corner a few vertices. A component of vertices in exactly 3 patches each, but more than 3 in
+// all, is two corners one mesh edge apart, and splits by patch set (the sphere's radial block
+// edges at the default size are 1.6 h long). Components with a vertex in 4 or more patches (a
+// T-junction, four blocks along a line) stay whole.
+std::vector<std::vector<int>> corner_clusters(const std::map<int, std::set<int>>& vp, const Adjacency& adj) {
+    auto components = [&](auto&& joined) {
+        std::map<int, std::vector<int>> cadj;
+        for (const auto& p : adj.pairs)
+            if (vp.at(p.v0).size() >= 3 && vp.at(p.v1).size() >= 3 && joined(p.v0, p.v1))
+                cadj[p.v0].push_back(p.v1), cadj[p.v1].push_back(p.v0);
+        std::map<int, int> of;  // corner vertex -> component
+        std::vector<std::vector<int>> out;
+        for (const auto& [v, ps] : vp) {
+            if (ps.size() < 3 || of.count(v)) continue;
+            out.push_back({});
+            std::vector<int> stack{v};
+            of[v] = int(out.size()) - 1;
+            while (!stack.empty()) {
+                const int x = stack.back();
+                stack.pop_back();
+                out.back().push_back(x);
+                for (int y : cadj[x]) if (!of.count(y)) of[y] = of[v], stack.push_back(y);
+            }
+        }
+        return std::pair{out, of};
+    };
+    const auto [whole, of] = components([](int, int) { return true; });
+    std::vector<char> splits(whole.size(), 0);
+    for (size_t c = 0; c < whole.size(); ++c) {
+        std::set<int> all;
+        bool pure = true;
+        for (int v : whole[c]) all.insert(vp.at(v).begin(), vp.at(v).end()), pure &= vp.at(v).size() == 3;
+        splits[c] = pure && all.size() > 3;
+    }
+    return components([&](int a, int b) { return !splits[of.at(a)] || vp.at(a) == vp.at(b); }).first;
+}
+
 }  // namespace
 
 BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, double h,
@@ -233,28 +271,10 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
         for (int p = 0; p < np; ++p) disks &= int(pv[p].size()) - int(pe[p].size()) + pf[p] == 1;
     }
 
-    // Corners: vertices in >= 3 patches, clustered along mesh edges between such vertices.
+    // Corners: vertices in >= 3 patches, clustered (corner_clusters).
     std::map<int, std::set<int>> vp;
     for (int i = 0; i < nf; ++i) for (int k = 0; k < 3; ++k) vp[S[i].verts[k]].insert(patch[i]);
-    std::map<int, int> corner_of;  // corner vertex -> cluster
-    std::vector<std::vector<int>> clusters;
-    {
-        std::map<int, std::vector<int>> cadj;
-        for (const auto& p : adj.pairs)
-            if (vp[p.v0].size() >= 3 && vp[p.v1].size() >= 3) cadj[p.v0].push_back(p.v1), cadj[p.v1].push_back(p.v0);
-        for (const auto& [v, ps] : vp) {
-            if (ps.size() < 3 || corner_of.count(v)) continue;
-            clusters.push_back({});
-            std::vector<int> stack{v};
-            corner_of[v] = int(clusters.size()) - 1;
-            while (!stack.empty()) {
-                const int x = stack.back();
-                stack.pop_back();
-                clusters.back().push_back(x);
-                for (int y : cadj[x]) if (!corner_of.count(y)) corner_of[y] = corner_of[v], stack.push_back(y);
-            }
-        }
-    }
+    const std::vector<std::vector<int>> clusters = corner_clusters(vp, adj);
     info.corners = int(clusters.size());
     bool degree3 = true;
     std::vector<Eigen::Vector3d> corner_pos;

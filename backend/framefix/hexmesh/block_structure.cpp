@@ -90,11 +90,25 @@ std::vector<std::vector<int>> merge_corners(const TetMesh& mesh, const BlockDeco
     return global;
 }
 
+// Area-weighted centroid of each patch of a block's boundary triangles.
+std::vector<Eigen::Vector3d> patch_centroids(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, const BlockFaces& f) {
+    std::vector<Eigen::Vector3d> sum(f.label.size(), Eigen::Vector3d::Zero());
+    std::vector<double> area(f.label.size(), 0);
+    for (size_t i = 0; i < S.size(); ++i) {
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) c += mesh.points.row(S[i].verts[k]).transpose() / 3;
+        const double a = S[i].normal.norm();
+        sum[f.patch[i]] += a * c, area[f.patch[i]] += a;
+    }
+    for (size_t p = 0; p < sum.size(); ++p) if (area[p] > 0) sum[p] /= area[p];
+    return sum;
+}
+
 // The block's corners as a cube: corner (0,0,0) is its lowest global corner, the three faces
 // there start the three axes, each axis ends at the face sharing no corner with its start.
 // Returns the local corner -> block corner map and the axis faces (patches), or false.
-bool cube_frame(const BlockFaces& f, const std::vector<int>& global, std::array<int, 8>& corner,
-                std::array<std::array<int, 2>, 3>& axis) {
+bool cube_frame(const TetMesh& mesh, const std::vector<BoundaryTriangle>& S, const BlockFaces& f,
+                const std::vector<int>& global, std::array<int, 8>& corner, std::array<std::array<int, 2>, 3>& axis) {
     if (f.corner_patches.size() != 8 || f.label.size() != 6) return false;
     const int c0 = int(std::min_element(global.begin(), global.end()) - global.begin());
     for (int a = 0; a < 3; ++a) {
@@ -124,9 +138,12 @@ bool cube_frame(const BlockFaces& f, const std::vector<int>& global, std::array<
         return true;
     };
     if (!fill()) return false;
-    const Eigen::Vector3d p0 = f.corner_position[corner[0]];
-    const double det = (f.corner_position[corner[1]] - p0).dot((f.corner_position[corner[2]] - p0).cross(f.corner_position[corner[4]] - p0));
-    if (det < 0) {
+    // Handedness from the faces, each axis running from its start face's centroid to its end
+    // face's: the corners alone misread a thin cushion (the sphere's outer blocks, 0.6 h thick at
+    // their corners and 2.7 h in the middle: one came out mirrored, all 80 hexes inverted).
+    const std::vector<Eigen::Vector3d> c = patch_centroids(mesh, S, f);
+    auto along = [&](int a) -> Eigen::Vector3d { return c[axis[a][1]] - c[axis[a][0]]; };
+    if (along(0).dot(along(1).cross(along(2))) < 0) {
         std::swap(axis[1], axis[2]);
         return fill();
     }
@@ -301,7 +318,7 @@ BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& d) {
     std::map<std::pair<int, int>, int> edge_of, face_of_pair;
     for (int b = 0; b < d.count; ++b) {
         BlockInput in{b, d.faces[b], d.boundary[b], {}, {}};
-        if (!cube_frame(in.faces, global[b], in.corner, in.axis)) {
+        if (!cube_frame(mesh, in.boundary, in.faces, global[b], in.corner, in.axis)) {
             cx.failure = "block " + std::to_string(b) + "'s faces and corners do not form a cube";
             return cx;
         }

@@ -83,6 +83,7 @@ Streamline trace_one(const TetMesh& mesh, const FrameField& field, const TetLoca
         for (int step = 0; step < o.max_steps; ++step) {
             const Eigen::Vector3d p = pts.back();
             const Eigen::Vector3d v1 = closest_direction_at(mesh, field, at, v);
+            if (step == 0 && o.start_picks_axis) v = v1;
             TetLocation l2 = locator.locate(p + 0.5 * h * v1, at.tet);
             const Eigen::Vector3d v2 = l2.tet >= 0 ? closest_direction_at(mesh, field, l2, v1) : v1;
             TetLocation l3 = locator.locate(p + 0.5 * h * v2, l2.tet >= 0 ? l2.tet : at.tet);

@@ -31,6 +31,10 @@ struct TraceOptions {
     double max_length = 0;         // model units; 0 = 3 x bbox diagonal (limit cycle)
     int max_steps = 20000;
     double max_turn_deg = 45;      // between consecutive step directions
+    // The start direction only picks the nearest field axis, with no turn test against it (a
+    // direction guessed from elsewhere, such as a sheet source's tangent). Off: a start more than
+    // max_turn_deg off every axis stops as SharpTurn, which drops seeds in a twisted field.
+    bool start_picks_axis = false;
     // Points of singular curves (model units, #S x 3) and the distance at which a streamline
     // that has already travelled 2 x stop_distance stops near them (0 = 1.5 x mean edge length).
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> singular_points;

@@ -1,7 +1,8 @@
 // Block decompositions with known answers (docs/algorithms.md#blocks): the cube is one block,
 // the L-shaped prism three, the cylinder five (a centre block and four around it; needs h <= 0.035
-// so that the outer blocks are >= 3 elements thick), the notch after boundary snapping seven, all
-// valid hexahedra, all neighbour pairs conforming, with the flat edge under the pocket reported.
+// so that the outer blocks are >= 3 elements thick), the sphere seven (a cube and six around it),
+// the notch after boundary snapping seven, all valid hexahedra, all neighbour pairs conforming,
+// with the flat edge under the pocket reported.
 // Every decomposition must cover the part exactly once with face-connected blocks.
 #include <gtest/gtest.h>
 
@@ -146,6 +147,30 @@ TEST(BlocksOnSamples, SnappedNotchIsSevenConformingBlocks) {
     EXPECT_TRUE(r.blocks.convex_paths.empty());
     EXPECT_EQ(r.blocks.curtain_corners, 0);
     expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
+}
+
+// A cube inside the sphere: 20 valence-3 curves (the cube's edges and 8 radial ones) cut it into
+// the cube and six blocks over its faces, 7 hexahedra and 18 conforming pairs (12 around the
+// cube's edges, 6 between the cube and the others). At the default size the radial curves are
+// about 1.6 edges long, so each outer block has corners one mesh edge apart.
+TEST(BlocksOnSamples, SphereIsACubeAndSixBlocksAtTwoSizes) {
+    for (double f : {1.0, 0.7}) {
+        SCOPED_TRACE("sphere at " + std::to_string(f));
+        const SampleRun& r = run("sphere", 0, f);
+        ASSERT_EQ(r.result.singularities->summary.valence3, 20);
+        EXPECT_EQ(r.blocks.count, 7);
+        expect_all_valid(r.blocks);
+        EXPECT_EQ(r.blocks.pairs, 18);
+        EXPECT_EQ(r.blocks.conforming_pairs, 18);
+        int inner = 0;  // the cube touches the six others, and contains the centre
+        for (const BlockInfo& b : r.blocks.blocks)
+            if (b.neighbours.size() == 6) {
+                ++inner;
+                EXPECT_LT(b.centroid.norm(), 0.05);
+            }
+        EXPECT_EQ(inner, 1);
+        expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
+    }
 }
 
 // docs/algorithms.md#curtain-corners: the dome's snapped paths lie on a convex surface and emit

@@ -118,6 +118,22 @@ TEST(Streamlines, StopReasons) {
               StopReason::LeftSolid);
 }
 
+// start_picks_axis: 46 degrees off the x axis (more than max_turn_deg) the streamline still runs
+// along x to the boundary; without it the start counts as a sharp turn.
+TEST(Streamlines, StartDirectionPicksTheNearestAxis) {
+    const test::Cube c = test::cube_tets(4);
+    const TetLocator locator(c.mesh, c.topo);
+    const Eigen::Vector3d off = Eigen::Vector3d(1, 1, 0.3).normalized(), start(0.1, 0.4, 0.5);
+    TraceOptions o;
+    ASSERT_GT(std::acos(off.x()) * 180 / M_PI, o.max_turn_deg);
+    EXPECT_EQ(trace_streamline(c.mesh, c.field, locator, start, off, o).reason, StopReason::SharpTurn);
+    o.start_picks_axis = true;
+    const Streamline s = trace_streamline(c.mesh, c.field, locator, start, off, o);
+    EXPECT_EQ(s.reason, StopReason::LeftSolid);
+    EXPECT_NEAR(s.points(s.points.rows() - 1, 0), 1.0, 1e-4);
+    EXPECT_NEAR(s.points(s.points.rows() - 1, 1), 0.4, 1e-9);
+}
+
 TEST(Streamlines, ManyInParallelMatchOneByOne) {
     const test::Cube c = test::cube_tets(4);
     const TetLocator locator(c.mesh, c.topo);
