@@ -357,7 +357,7 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
         {disks, "a face is not a disk"},
         {degree3, "a corner is not of degree 3"},
     };
-    info.valid = true;
+    info.valid = true, info.reason.clear();  // a block validated again (one-sided contacts) drops its old reason
     for (const auto& [ok, why] : tests)
         if (!ok) { info.valid = false, info.reason = why; break; }
     return out;

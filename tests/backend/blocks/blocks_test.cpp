@@ -78,6 +78,7 @@ void expect_all_valid(const BlockDecomposition& d) {
     for (int b = 0; b < d.count; ++b) {
         const BlockInfo& i = d.blocks[b];
         EXPECT_TRUE(i.valid) << "block " << b << ": " << i.reason;
+        EXPECT_TRUE(i.reason.empty()) << "block " << b << " is valid but says: " << i.reason;
         EXPECT_EQ(i.faces, 6);
         EXPECT_EQ(i.edges, 12);
         EXPECT_EQ(i.corners, 8);

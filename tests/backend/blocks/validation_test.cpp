@@ -110,6 +110,18 @@ TEST(ValidateBlock, LShapedBlockIsNotAHexahedron) {
     EXPECT_EQ(info.corners, 12);
 }
 
+// build_blocks validates a block again after dissolving a one-sided contact: a block that then
+// passes must not keep the reason of its first validation.
+TEST(ValidateBlock, AValidationAgainForgetsTheOldReason) {
+    const Blocks l = split(tagged_l_prism(kCells), [](const Eigen::Vector3d&) { return 0; });
+    const Blocks cube = split(testing::cube_tets(kCells).mesh, [](const Eigen::Vector3d&) { return 0; });
+    BlockInfo info = l.info[0];
+    ASSERT_FALSE(info.valid);
+    validate_block(cube.mesh, cube.surface[0], cube.h, BlockOptions{}, info);
+    EXPECT_TRUE(info.valid);
+    EXPECT_EQ(info.reason, "");
+}
+
 TEST(CheckConformity, HalvesOfTheCubeShareOneFace) {
     const Blocks b = split(testing::cube_tets(kCells).mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.5 ? 0 : 1; });
     for (const BlockInfo& info : b.info) EXPECT_TRUE(info.valid) << info.reason;
