@@ -195,6 +195,14 @@ def sphere():
     return Part.makeSphere(0.5)
 
 
+def rounded_box():
+    """A machined block: a 1.2 x 1 x 0.8 box with every edge filleted, r = 0.15. Like the sphere, a
+    box inside (20 valence-3 curves, 7 blocks), under cushions about 0.1 thick: under 3 h at the
+    default size, so its blocks need the finer mesh of docs/algorithms.md#thin-blocks."""
+    box = Part.makeBox(1.2, 1, 0.8)
+    return box.makeFillet(0.15, box.Edges)
+
+
 def l_prism():
     pts = [V(0, 0, 0), V(1, 0, 0), V(1, 0.5, 0), V(0.5, 0.5, 0), V(0.5, 1, 0), V(0, 1, 0), V(0, 0, 0)]
     return Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, 0.5))
@@ -203,7 +211,8 @@ def l_prism():
 SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism,
            notch_filleted, half_sphere_box_filleted, groove_filleted,
            notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow,
-           groove_wide_filleted, box_arc_wide, box_arc_small, box_arc_curved_flat, box_arc_curved_steep, sphere]
+           groove_wide_filleted, box_arc_wide, box_arc_small, box_arc_curved_flat, box_arc_curved_steep, sphere,
+           rounded_box]
 
 
 def write_bad_inputs():

@@ -28,6 +28,7 @@ struct Args {
     double hex_size = 0;
     int layers = 0, order = 1;
     bool no_refine = false;
+    bool no_remesh_thin = false;
     std::string mesher = "tetgen";
     std::string method = framefix::correction_methods()[0].name;
 };
@@ -63,6 +64,7 @@ framefix::RunOptions options_from(const Args& a, framefix::Stage stop_after) {
     o.hexmesh.layers = a.layers;
     o.hexmesh.order = a.order;
     o.hexmesh.refine_flat = !a.no_refine;
+    o.remesh_thin = !a.no_remesh_thin;
     o.mesh.size = a.size;
     o.mesh.mesher = framefix::mesher_named(a.mesher);
     o.size_factor = a.size_factor;
@@ -125,6 +127,9 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     commands[4].app->add_flag("--no-refine", a.no_refine, "keep blocks with a flat edge as they are (no three-block template)");
     commands[4].app->add_option("--order", a.order, "1: 8-node hexes (C3D8), 2: 20-node (C3D20)")->check(CLI::Range(1, 2));
+    for (int k : {3, 4})
+        commands[k].app->add_flag("--no-remesh-thin", a.no_remesh_thin,
+                                  "keep the mesh when blocks thinner than 3 tet edges come out invalid (no finer mesh next to them)");
     for (int k : {2, 3, 4})
         commands[k].app->add_option("--budget-s", a.budget_s, "method auto: seconds for its tries (default: 120 per 50k tets)")
             ->check(CLI::PositiveNumber);

@@ -22,9 +22,13 @@ Stage stage_named(const std::string& name) {
 
 struct HexArgs { double size = 0; int layers = 0, order = 1; bool refine = true; };
 
+struct BlockArgs { bool remesh_thin = true; };
+
 RunOptions make_options(const std::string& stop_after, const std::string& method, double size, double size_factor,
-                        int threads, double budget_s, bool fillet_rims, const HexArgs& hex, const std::string& mesher) {
+                        int threads, double budget_s, bool fillet_rims, const HexArgs& hex, const std::string& mesher,
+                        const BlockArgs& blocks) {
     RunOptions o;
+    o.remesh_thin = blocks.remesh_thin;
     o.mesh.mesher = mesher_named(mesher);
     o.hexmesh.size = hex.size;
     o.hexmesh.layers = hex.layers;
@@ -207,26 +211,30 @@ void bind_pipeline(py::module_& m) {
         "run_file",
         [](const std::string& path, const std::string& stop_after, const std::string& method, double size,
            double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order,
-           const std::string& mesher, bool refine) {
+           const std::string& mesher, bool refine, bool remesh_thin) {
             return run(RunInput::file(path), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
-                                                         HexArgs{hex_size, layers, order, refine}, mesher));
+                                                         HexArgs{hex_size, layers, order, refine}, mesher,
+                                                         BlockArgs{remesh_thin}));
         },
         py::arg("path"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
         py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
-        py::arg("mesher") = "tetgen", py::arg("refine") = true, py::call_guard<py::gil_scoped_release>());
+        py::arg("mesher") = "tetgen", py::arg("refine") = true, py::arg("remesh_thin") = true,
+        py::call_guard<py::gil_scoped_release>());
     m.def(
         "run_shape",
         [](const BrepModel& shape, const std::string& stop_after, const std::string& method, double size,
            double size_factor, int threads, double budget_s, bool fillet_rims, double hex_size, int layers, int order,
-           const std::string& mesher, bool refine) {
+           const std::string& mesher, bool refine, bool remesh_thin) {
             return run(RunInput::shape(shape), make_options(stop_after, method, size, size_factor, threads, budget_s, fillet_rims,
-                                                         HexArgs{hex_size, layers, order, refine}, mesher));
+                                                         HexArgs{hex_size, layers, order, refine}, mesher,
+                                                         BlockArgs{remesh_thin}));
         },
         py::arg("shape"), py::arg("stop_after") = "singularities", py::arg("method") = "auto", py::arg("size") = 0.0,
         py::arg("size_factor") = 1.0, py::arg("threads") = 0, py::arg("budget_s") = 0.0,
         py::arg("fillet_rims") = false, py::arg("hex_size") = 0.0, py::arg("layers") = 0, py::arg("order") = 1,
-        py::arg("mesher") = "tetgen", py::arg("refine") = true, py::call_guard<py::gil_scoped_release>());
+        py::arg("mesher") = "tetgen", py::arg("refine") = true, py::arg("remesh_thin") = true,
+        py::call_guard<py::gil_scoped_release>());
     m.def("info_json", &info_json, "`framefix info`: defaults and correction methods, as JSON text");
 }
 

@@ -55,3 +55,45 @@ def test_blocks_without_correction_has_no_correction_section(tmp_path):
     assert r["blocks"]["count"] == 3
     assert progress_stages(err) == ["load", "mesh", "field", "singularities", "blocks"]
     assert not (tmp_path / "snapped_curves.vtk").exists()
+
+
+def thin_blocks(tmp_path, *flags):
+    code, out, err = run("blocks", SAMPLES / "rounded_box.step", "--method", "none", "--out", tmp_path, "--quiet",
+                         *flags, timeout=600)
+    assert code == 0, err
+    return json.loads((tmp_path / "report.json").read_text()), out
+
+
+@pytest.mark.parametrize("factor", ["1", "0.7"])
+def test_rounded_box_thin_cushions_get_a_finer_mesh(tmp_path, factor):
+    """rounded_box: a box inside (20 valence-3 curves) under cushions about 0.1 thick, under 3 h
+    at both sizes, so the first mesh cannot carve them. Meshed again finer next to its faces, it
+    gives the graph's 7 blocks (the box and six cushions), the finer mesh's tets bounded by a run at
+    0.6 x. At 0.7 x all are valid; at the default size the two cushion-to-cushion contacts along
+    two fillets stay below the sizes' floor of h / 3 and are cleaned away as slivers."""
+    r, out = thin_blocks(tmp_path, "--size-factor", factor)
+    t, b = r["blocks"]["thin_refinement"], r["blocks"]
+    assert t["tried"] and t["kept"], t["reason"]
+    assert t["before"]["valid"] < t["before"]["count"] or t["before"]["count"] < 7
+    assert t["faces"] == 26 and 0 < t["min_size"] < r["mesh"]["size"]
+    assert r["mesh"]["tets"] == t["tets_after"] and t["tets_before"] < t["tets_after"] <= t["tets_before"] / 0.6 ** 3
+    assert r["singularities"]["summary"]["valence3"] == 20 and r["singularities"]["summary"]["meshable"]
+    assert b["count"] == 7
+    cube = max(b["blocks"], key=lambda k: k["volume"])
+    assert cube["valid"] and sorted(cube["neighbours"]) == [k["id"] for k in b["blocks"] if k is not cube]
+    if factor == "0.7":
+        assert b["valid"] == 7 and (b["conforming_pairs"], b["pairs"]) == (18, 18)
+    else:
+        assert b["valid"] >= 5
+    assert "meshed again finer next to 26 faces" in out
+
+
+def test_thin_refinement_can_be_turned_off_and_is_not_tried_when_blocks_are_valid(tmp_path):
+    r, _ = thin_blocks(tmp_path / "off", "--size-factor", "0.7", "--no-remesh-thin")
+    t = r["blocks"]["thin_refinement"]
+    assert not t["tried"] and "turned off" in t["reason"]
+    assert r["blocks"]["valid"] < 7  # what the default mesh carves alone
+    code, _, err = run("blocks", SAMPLES / "l_prism.step", "--method", "none", "--out", tmp_path / "prism", "--quiet")
+    assert code == 0, err
+    t = json.loads((tmp_path / "prism" / "report.json").read_text())["blocks"]["thin_refinement"]
+    assert not t["tried"] and "every block is valid" in t["reason"]

@@ -51,9 +51,9 @@ BoundaryDistance::BoundaryDistance(const TetMesh& mesh) : mesh_(mesh), centroids
 }
 
 bool BoundaryDistance::within(const Eigen::Vector3d& p, double radius) const {
-    std::vector<int> near;
-    centroids_.within(p, radius + reach_, near);
-    for (int f : near) {
+    std::vector<int> candidates;
+    centroids_.within(p, radius + reach_, candidates);
+    for (int f : candidates) {
         const Eigen::Vector3d a = mesh_.points.row(mesh_.boundary_faces(f, 0)), b = mesh_.points.row(mesh_.boundary_faces(f, 1)),
                               c = mesh_.points.row(mesh_.boundary_faces(f, 2));
         if ((closest_on_triangle(p, a, b, c) - p).norm() < radius) return true;
@@ -61,12 +61,25 @@ bool BoundaryDistance::within(const Eigen::Vector3d& p, double radius) const {
     return false;
 }
 
+std::vector<std::pair<int, double>> BoundaryDistance::near(const Eigen::Vector3d& p, double radius) const {
+    std::vector<int> candidates;
+    centroids_.within(p, radius + reach_, candidates);
+    std::vector<std::pair<int, double>> out;
+    for (int f : candidates) {
+        const double d = (closest_on_triangle(p, mesh_.points.row(mesh_.boundary_faces(f, 0)).transpose(),
+                                              mesh_.points.row(mesh_.boundary_faces(f, 1)).transpose(),
+                                              mesh_.points.row(mesh_.boundary_faces(f, 2)).transpose()) - p).norm();
+        if (d < radius) out.emplace_back(f, d);
+    }
+    return out;
+}
+
 Eigen::Vector3d BoundaryDistance::closest(const Eigen::Vector3d& p, double radius) const {
-    std::vector<int> near;
-    centroids_.within(p, radius + reach_, near);
+    std::vector<int> candidates;
+    centroids_.within(p, radius + reach_, candidates);
     Eigen::Vector3d best = p;
     double d = radius;
-    for (int f : near) {
+    for (int f : candidates) {
         const Eigen::Vector3d q = closest_on_triangle(p, mesh_.points.row(mesh_.boundary_faces(f, 0)).transpose(),
                                                       mesh_.points.row(mesh_.boundary_faces(f, 1)).transpose(),
                                                       mesh_.points.row(mesh_.boundary_faces(f, 2)).transpose());

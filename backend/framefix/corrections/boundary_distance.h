@@ -1,6 +1,9 @@
 #pragma once
 // Distance from a point to the boundary triangles of a tet mesh (a hash grid of triangle
 // centroids, exact point-triangle distances within the query radius).
+#include <utility>
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "framefix/mesh/tet_mesh.h"
@@ -15,6 +18,8 @@ public:
     bool within(const Eigen::Vector3d& p, double radius) const;
     // The closest point to p on the boundary triangles within `radius`; p itself when none.
     Eigen::Vector3d closest(const Eigen::Vector3d& p, double radius) const;
+    // Every boundary triangle closer than `radius` to p, with its distance.
+    std::vector<std::pair<int, double>> near(const Eigen::Vector3d& p, double radius) const;
 
 private:
     const TetMesh& mesh_;

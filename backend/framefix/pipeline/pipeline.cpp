@@ -11,6 +11,7 @@
 #include "framefix/pipeline/correction_methods.h"
 #include "framefix/pipeline/mesh_attempts.h"
 #include "framefix/pipeline/solve_stages.h"
+#include "framefix/pipeline/thin_blocks.h"
 
 namespace framefix {
 namespace {
@@ -176,6 +177,14 @@ RunResult run(const RunInput& input, const RunOptions& o) {
         timed(t.correct, t, [&] { r.correction = detail::correct(*r.mesh, *r.field, *r.singularities, o, r.model.get()); });
     if (done(Stage::correction)) return r;
     timed(t.blocks, t, [&] { r.blocks = blocks(r, o); });
+    if (o.remesh_thin) {
+        double seconds = 0;
+        timed(seconds, t, [&] { r.thin = refine_thin_blocks(o, r); });
+        t.blocks += seconds;
+    } else {
+        r.thin = ThinRefinement{};
+        r.thin->reason = "turned off (--no-remesh-thin)";
+    }
     if (done(Stage::blocks)) return r;
     timed(t.hexmesh, t, [&] { r.hexmesh = hexmesh(r, o); });
     done(Stage::hexmesh);

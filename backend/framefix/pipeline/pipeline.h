@@ -32,6 +32,7 @@ struct RunResult {
     std::optional<SingularityGraph> singularities;  // the corrected graph after a correction
     std::optional<Correction> correction;     // absent when the run had none
     std::optional<BlockDecomposition> blocks;
+    std::optional<ThinRefinement> thin;       // blocks runs on a B-rep whose blocks were not all valid
     std::optional<HexMesh> hexmesh;          // done = false with the reason when the blocks cannot be meshed
     Timings timings;
     double peak_memory_mb = 0;

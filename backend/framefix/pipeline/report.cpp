@@ -188,6 +188,16 @@ void refined_blocks_json(const HexRefinement& r, json& b) {
                     {"flat_edges_before", r.flat_edges_before}, {"flat_corners_before", r.flat_corners_before}};
 }
 
+json thin_json(const ThinRefinement& t) {
+    return {{"tried", t.tried}, {"kept", t.kept}, {"reason", t.reason}, {"faces", t.faces},
+            {"min_size", t.min_size}, {"thinnest", t.thinnest}, {"tets_before", t.tets_before},
+            {"tets_after", t.tets_after}, {"seconds", t.seconds},
+            {"before", {{"count", t.count_before}, {"valid", t.valid_before}, {"pairs", t.pairs_before},
+                        {"conforming_pairs", t.conforming_before}}},
+            {"finer", {{"count", t.count_after}, {"valid", t.valid_after}, {"pairs", t.pairs_after},
+                       {"conforming_pairs", t.conforming_after}}}};
+}
+
 json refinement_json(const HexRefinement& r) {
     json corners = json::array();
     for (const Eigen::Vector3d& p : r.flat_corner_positions) corners.push_back(point(p));
@@ -272,6 +282,7 @@ std::string report_json(const RunResult& r) {
     if (r.singularities) j["singularities"] = singularities_json(*r.singularities);
     if (r.correction) j["correction"] = correction_json(*r.correction, r.singularities->summary);
     if (r.blocks) j["blocks"] = blocks_json(*r.blocks);
+    if (r.blocks && r.thin) j["blocks"]["thin_refinement"] = thin_json(*r.thin);
     if (r.hexmesh) j["hexmesh"] = hexmesh_json(*r.hexmesh);
     if (r.blocks && r.hexmesh && r.hexmesh->refinement.kept) refined_blocks_json(r.hexmesh->refinement, j["blocks"]);
     j["timings_s"] = timings_json(r);

@@ -26,6 +26,8 @@ struct RunOptions {
     SnapOptions snap;
     FilletPlanOptions fillet;
     BlockOptions blocks;
+    // Mesh again finer next to blocks thinner than 3 h when the blocks are not all valid (thin_blocks.h).
+    bool remesh_thin = true;
     HexMeshOptions hexmesh;
     double size_factor = 1;  // multiplies the default size when mesh.size == 0
     int threads = 0;         // OpenMP threads of this run's parallel loops, 0 = all cores

@@ -99,6 +99,21 @@ struct Correction {
     double seconds = 0;             // method + re-solve + re-extraction
 };
 
+// Blocks thinner than the mesh resolves (thin_blocks.h): the run meshed again, finer on the faces
+// next to them. The figures of both decompositions, whichever was kept.
+struct ThinRefinement {
+    bool tried = false;          // false: the reason says why not
+    bool kept = false;           // the finer run's mesh, field, graph and blocks are the run's
+    std::string reason;
+    int faces = 0;               // B-rep faces meshed finer
+    double min_size = 0;         // their finest edge length, model units
+    double thinnest = 0;         // the smallest singular-curve-to-boundary distance, model units
+    long tets_before = 0, tets_after = 0;
+    int count_before = 0, valid_before = 0, pairs_before = 0, conforming_before = 0;
+    int count_after = 0, valid_after = 0, pairs_after = 0, conforming_after = 0;
+    double seconds = 0;          // the finer run, from meshing to its blocks
+};
+
 struct Timings {  // seconds
     double load = 0, mesh = 0, field = 0, singularities = 0, correct = 0, blocks = 0, hexmesh = 0, total = 0;
 };

@@ -50,6 +50,9 @@ std::string human_summary(const RunResult& r) {
              (blocks->valid == blocks->count ? std::string("all valid") : std::to_string(blocks->valid) + " valid") +
              ", " + std::to_string(blocks->conforming_pairs) + "/" + std::to_string(blocks->pairs) + " pairs conforming";
         if (blocks->flat_edges) s += ", " + std::to_string(blocks->flat_edges) + " flat edge" + (blocks->flat_edges == 1 ? "" : "s");
+        if (r.thin && r.thin->kept)
+            s += " (meshed again finer next to " + std::to_string(r.thin->faces) + " face" + (r.thin->faces == 1 ? "" : "s") +
+                 ": blocks thinner than 3 h)";
     }
     if (const auto& hex = r.hexmesh) {
         char q[96];

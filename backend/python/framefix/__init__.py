@@ -19,7 +19,8 @@ __all__ = ["Error", "Shape", "TetMesh", "FrameField", "SingularityGraph", "Analy
 
 
 def run(part, stop_after="singularities", method="auto", size=None, size_factor=1.0, threads=0,
-        budget_s=0.0, fillet_rims=False, hex_size=None, layers=0, order=1, mesher="tetgen", refine=True):
+        budget_s=0.0, fillet_rims=False, hex_size=None, layers=0, order=1, mesher="tetgen", refine=True,
+        remesh_thin=True):
     """The pipeline on a file path, a :class:`Shape`, or a BREP string, up to `stop_after`
     (load, mesh, field, singularities, correct, blocks, hexmesh); `method` is the correction (see
     :func:`correction_methods`), or "none"; `budget_s` is method auto's time budget (0: 120 s
@@ -28,7 +29,9 @@ def run(part, stop_after="singularities", method="auto", size=None, size_factor=
     `stop_after` are None; ``report(result)`` gives report.json's content as a dict.
     `hex_size`, `layers`, `order` and `refine` are the hex mesh's (see :func:`hex_mesh`). `mesher` is the
     volume mesher: "tetgen" (the default) or "hxt" (gmsh's HXT: several times faster on large
-    meshes; with more than one thread its tets differ slightly from run to run).
+    meshes; with more than one thread its tets differ slightly from run to run). With `remesh_thin`,
+    blocks that come out invalid where they are thinner than 3 tet edges get a finer mesh next to
+    them (report.json's blocks.thin_refinement).
     """
     size = float(size or 0.0)
     hex_args = (float(hex_size or 0.0), int(layers), int(order))
@@ -36,8 +39,8 @@ def run(part, stop_after="singularities", method="auto", size=None, size_factor=
         part = load_brep_string(part)
     args = (stop_after, method, size, size_factor, threads, budget_s, fillet_rims, *hex_args)
     if isinstance(part, Shape):
-        return _core.run_shape(part, *args, mesher=mesher, refine=refine)
-    return _core.run_file(str(part), *args, mesher=mesher, refine=refine)
+        return _core.run_shape(part, *args, mesher=mesher, refine=refine, remesh_thin=remesh_thin)
+    return _core.run_file(str(part), *args, mesher=mesher, refine=refine, remesh_thin=remesh_thin)
 
 
 def mesh_part(part, size=None, size_factor=1.0, threads=0, mesher="tetgen"):
@@ -60,17 +63,19 @@ def correct(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s
     return run(part, "correct", method, size, size_factor, threads, budget_s, fillet_rims)
 
 
-def build_blocks(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False):
+def build_blocks(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False,
+                 remesh_thin=True):
     """Analyse a part, correct it (`method`, or "none"), cut it into blocks.
 
     ``.blocks`` has ``.tet_block`` (block id per tet), ``.count``, ``.valid``;
-    ``report(result)["blocks"]`` the validation.
+    ``report(result)["blocks"]`` the validation. With `remesh_thin`, invalid blocks thinner than 3
+    tet edges get a finer mesh next to them (``report(result)["blocks"]["thin_refinement"]``).
     """
-    return run(part, "blocks", method, size, size_factor, threads, budget_s, fillet_rims)
+    return run(part, "blocks", method, size, size_factor, threads, budget_s, fillet_rims, remesh_thin=remesh_thin)
 
 
 def hex_mesh(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False,
-             hex_size=None, layers=0, order=1, refine=True):
+             hex_size=None, layers=0, order=1, refine=True, remesh_thin=True):
     """Analyse, correct, cut into blocks, then mesh the blocks with hexahedra.
 
     `hex_size` is the target hex edge length (default: two tet edges), `layers` the hexes along
@@ -80,7 +85,7 @@ def hex_mesh(part, method="auto", size=None, size_factor=1.0, threads=0, budget_
     ``.scaled_jacobian``, ``.quality`` and ``.refinement``.
     """
     return run(part, "hexmesh", method, size, size_factor, threads, budget_s, fillet_rims, hex_size, layers, order,
-               refine=refine)
+               refine=refine, remesh_thin=remesh_thin)
 
 
 def info():

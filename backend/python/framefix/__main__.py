@@ -31,6 +31,7 @@ def main(argv=None):
     parser.add_argument("--order", type=int, default=1)
     parser.add_argument("--mesher", default="tetgen")
     parser.add_argument("--no-refine", action="store_true")
+    parser.add_argument("--no-remesh-thin", action="store_true")
     try:
         args = parser.parse_args(argv)
     except SystemExit as e:
@@ -41,7 +42,8 @@ def main(argv=None):
             raise framefix.Error("correct: method 'none' corrects nothing; use analyze, or --method snap")
         result = framefix.run(args.part, STAGES[args.command], args.method, args.size, args.size_factor,
                               args.threads, args.budget_s, args.fillet_rims, args.hex_size, args.layers, args.order,
-                              mesher=args.mesher, refine=not args.no_refine)
+                              mesher=args.mesher, refine=not args.no_refine,
+                              remesh_thin=not args.no_remesh_thin)
         result.write_outputs(args.out)
     except framefix.Error as e:
         print(f"framefix: error [{str(e).split(':', 1)[0]}]: {str(e).split(': ', 1)[-1]}", file=sys.stderr)

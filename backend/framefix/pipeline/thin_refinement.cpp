@@ -1,0 +1,112 @@
+// The run's answer to blocks thinner than the mesh resolves (thin_blocks.h, docs/algorithms.md#thin-blocks).
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <string>
+#include <tuple>
+
+#include "framefix/pipeline/solve_stages.h"
+#include "framefix/pipeline/thin_blocks.h"
+
+namespace framefix {
+namespace {
+
+bool all_good(const BlockDecomposition& b) { return b.valid == b.count && b.conforming_pairs == b.pairs; }
+
+// Better blocks: all valid and conforming first, then fewer 3-5 curves plus invalid nodes, then
+// valid minus invalid blocks, then conforming minus other pairs.
+auto block_score(const RunResult& r) {
+    const BlockDecomposition& b = *r.blocks;
+    return std::make_tuple(all_good(b), -detail::defects(r.singularities->summary), 2 * b.valid - b.count,
+                           2 * b.conforming_pairs - b.pairs);
+}
+
+// Why the run's blocks get no finer mesh; empty when they may (thin_blocks.h).
+std::string thin_blocks_skip(const RunResult& r) {
+    if (!r.model) return "a tet-mesh input has no B-rep to mesh again";
+    if (all_good(*r.blocks)) return "every block is valid and every pair conforms";
+    if (!r.singularities->summary.meshable) return "the graph is not hex-meshable";
+    if (r.correction && r.correction->remeshed) return "the correction made a new solid or mesh";
+    return "";
+}
+
+// The finer mesh may have at most this many times the tets: those of a run at --size-factor 0.6,
+// the finest size the samples are checked at.
+constexpr double kMaxThinTetFactor = 1 / (0.6 * 0.6 * 0.6);
+
+// Topology face -> whether a tet on it is in an invalid block or a block with a non-conforming
+// pair: only there do thin blocks need a finer mesh.
+std::function<bool(int)> in_trouble(const RunResult& r) {
+    const BlockDecomposition& b = *r.blocks;
+    auto trouble = std::make_shared<std::vector<char>>(size_t(b.count), 0);
+    for (int k = 0; k < b.count; ++k) (*trouble)[size_t(k)] = !b.blocks[size_t(k)].valid;
+    for (const BlockPair& p : b.neighbour_pairs)
+        if (!p.conforming) (*trouble)[size_t(p.a)] = (*trouble)[size_t(p.b)] = 1;
+    const TetTopology* topo = &r.mesh->topology;
+    const Eigen::VectorXi* block = &b.tet_block;
+    return [trouble, topo, block](int f) {
+        for (int k = 0; k < 2; ++k) {
+            const int t = topo->face_tets(f, k);
+            if (t >= 0 && (*trouble)[size_t((*block)[t])]) return true;
+        }
+        return false;
+    };
+}
+
+}  // namespace
+
+ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
+    ThinRefinement t;
+    const BlockDecomposition& b = *r.blocks;
+    t.tets_before = r.mesh->tets.num_tets();
+    t.count_before = b.count, t.valid_before = b.valid, t.pairs_before = b.pairs, t.conforming_before = b.conforming_pairs;
+    t.reason = thin_blocks_skip(r);
+    if (!t.reason.empty()) return t;
+    const ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.h, in_trouble(r));
+    t.faces = int(thin.face_size.size());
+    t.thinnest = thin.thinnest;
+    if (thin.face_size.empty()) {
+        t.reason = "no singular curve runs closer than " + std::to_string(int(kResolvedThicknessH)) + " h to the boundary";
+        return t;
+    }
+    t.min_size = std::min_element(thin.face_size.begin(), thin.face_size.end(),
+                                  [](const auto& a, const auto& c) { return a.second < c.second; })->second;
+    const double estimate = estimate_thin_tets(r.mesh->tets, thin);
+    if (estimate > kMaxThinTetFactor * double(t.tets_before)) {
+        t.reason = "the thin blocks need about " + std::to_string(long(estimate / 1000)) + "k tets, more than " +
+                   std::to_string(kMaxThinTetFactor).substr(0, 3) + " x this mesh's; a smaller --size-factor meshes them finer";
+        return t;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    RunOptions fine = o;
+    fine.remesh_thin = false;
+    fine.stop_after = Stage::blocks;
+    fine.mesh.size = r.mesh->tets.size;
+    fine.mesh.face_size = thin.face_size;
+    fine.progress = {};
+    RunResult f;
+    t.tried = true;
+    try {
+        f = run(RunInput{r.input_path, r.model}, fine);
+    } catch (const std::exception& e) {  // TetGen on the finer surface, memory: the first run stands
+        t.reason = std::string("the finer mesh failed: ") + e.what();
+        return t;
+    }
+    t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    t.tets_after = f.mesh->tets.num_tets();
+    t.count_after = f.blocks->count, t.valid_after = f.blocks->valid;
+    t.pairs_after = f.blocks->pairs, t.conforming_after = f.blocks->conforming_pairs;
+    t.kept = block_score(f) > block_score(r);
+    t.reason = t.kept ? "blocks thinner than " + std::to_string(int(kResolvedThicknessH)) + " h next to " +
+                            std::to_string(t.faces) + " faces"
+                      : "the finer mesh's blocks are not better";
+    if (t.kept) {
+        r.mesh = std::move(f.mesh), r.field = std::move(f.field), r.singularities = std::move(f.singularities);
+        r.correction = std::move(f.correction), r.blocks = std::move(f.blocks);
+    }
+    return t;
+}
+
+}  // namespace framefix

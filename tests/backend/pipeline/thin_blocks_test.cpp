@@ -1,0 +1,106 @@
+// Blocks thinner than the mesh resolves (pipeline/thin_blocks.h): which faces get a finer mesh,
+// and how fine, for singular curves placed by hand in the unit cube.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "framefix/pipeline/pipeline.h"
+#include "framefix/pipeline/thin_blocks.h"
+
+namespace framefix {
+namespace {
+
+std::string sample(const std::string& name) { return std::string(FRAMEFIX_SAMPLES_DIR) + "/" + name + ".step"; }
+
+constexpr double kH = 0.1;  // tet size of the cube's mesh
+
+const MeshStage& cube_mesh() {
+    static const RunResult r = [] {
+        RunOptions o;
+        o.stop_after = Stage::mesh;
+        o.mesh.size = kH;
+        return run(RunInput::file(sample("cube")), o);
+    }();
+    return *r.mesh;
+}
+
+// The B-rep face whose triangles lie in the plane coordinate `axis` = `value`.
+int face_at(const TetMesh& m, int axis, double value) {
+    for (Eigen::Index b = 0; b < m.boundary_faces.rows(); ++b) {
+        bool on = true;
+        for (int k = 0; k < 3; ++k) on = on && std::abs(m.points(m.boundary_faces(b, k), axis) - value) < 1e-9;
+        if (on) return m.face_tags[b];
+    }
+    return -1;
+}
+
+// An interior curve (no end nodes) along y from `a` to `b`, points every 0.05.
+SingularCurve curve_along_y(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int first_face = 0) {
+    SingularCurve c;
+    const int n = int(std::round((b - a).norm() / 0.05)) + 1;
+    c.points.resize(n, 3);
+    for (int i = 0; i < n; ++i) c.points.row(i) = (a + (b - a) * double(i) / (n - 1)).transpose();
+    for (int i = 0; i + 2 < n; ++i) c.faces.push_back(first_face + i);
+    return c;
+}
+
+TEST(ThinBlocks, ACurveNearAWallRefinesTheWallsWithinThreeH) {
+    // 0.2 from x = 0 (2 h): that wall gets 0.2 / 3; its ends 0.2 from y = 0 and y = 1 refine those
+    // walls to 0.2 / 3 as well; z = 0, z = 1 (0.5 away) and x = 1 (0.8) are beyond 3 h.
+    const TetMesh& m = cube_mesh().tets;
+    SingularityGraph g;
+    g.curves.push_back(curve_along_y({0.2, 0.2, 0.5}, {0.2, 0.8, 0.5}));
+    const ThinFaces t = thin_block_faces(m, g, kH);
+    ASSERT_EQ(t.face_size.size(), 3u);
+    for (auto [axis, value] : {std::pair{0, 0.0}, {1, 0.0}, {1, 1.0}}) {
+        const int f = face_at(m, axis, value);
+        ASSERT_TRUE(t.face_size.count(f)) << "axis " << axis << " at " << value;
+        EXPECT_NEAR(t.face_size.at(f), 0.2 / 3, 1e-9);
+    }
+    EXPECT_NEAR(t.thinnest, 0.2, 1e-9);
+    EXPECT_GT(estimate_thin_tets(m, t), double(m.num_tets()));
+}
+
+TEST(ThinBlocks, SizesStopAtAThirdOfH) {
+    const TetMesh& m = cube_mesh().tets;
+    SingularityGraph g;
+    g.curves.push_back(curve_along_y({0.07, 0.4, 0.5}, {0.07, 0.6, 0.5}));  // 0.7 h from x = 0
+    const ThinFaces t = thin_block_faces(m, g, kH);
+    ASSERT_EQ(t.face_size.size(), 1u);
+    EXPECT_NEAR(t.face_size.at(face_at(m, 0, 0.0)), kH / 3, 1e-9);
+}
+
+TEST(ThinBlocks, CurvesOnTheWallCurvesFarFromItAndRejectedTrianglesCountForNothing) {
+    const TetMesh& m = cube_mesh().tets;
+    SingularityGraph g;
+    g.curves.push_back(curve_along_y({0.03, 0.4, 0.5}, {0.03, 0.6, 0.5}));  // on the wall: a snapped path
+    g.curves.push_back(curve_along_y({0.5, 0.4, 0.5}, {0.5, 0.6, 0.5}));    // 5 h from every wall
+    EXPECT_TRUE(thin_block_faces(m, g, kH).face_size.empty());
+    SingularityGraph near;
+    near.curves.push_back(curve_along_y({0.2, 0.2, 0.5}, {0.2, 0.8, 0.5}, 100));
+    EXPECT_TRUE(thin_block_faces(m, near, kH, [](int f) { return f < 100; }).face_size.empty());
+    EXPECT_EQ(thin_block_faces(m, near, kH, [](int f) { return f >= 100; }).face_size.size(), 3u);
+}
+
+TEST(ThinBlocks, ACurveEnteringTheWallIsNotThinWhereItEnters) {
+    // From x = 0.48 straight into the wall x = 0, points every 0.04: the last 1.5 h are where it
+    // enters, not a thin block; the point 0.16 from its end is the nearest that counts.
+    const TetMesh& m = cube_mesh().tets;
+    SingularityGraph g;
+    SingularCurve c;
+    c.points.resize(13, 3);
+    for (int i = 0; i <= 12; ++i) c.points.row(i) << 0.48 - 0.04 * i, 0.5, 0.5;
+    for (int i = 0; i < 11; ++i) c.faces.push_back(i);
+    g.nodes.resize(2);
+    g.nodes[1].boundary = true;
+    c.ends[0] = 0, c.ends[1] = 1;
+    g.curves.push_back(c);
+    const ThinFaces t = thin_block_faces(m, g, kH);
+    ASSERT_EQ(t.face_size.size(), 1u);
+    EXPECT_NEAR(t.thinnest, 0.16, 1e-9);
+    EXPECT_NEAR(t.face_size.at(face_at(m, 0, 0.0)), 0.16 / 3, 1e-9);
+}
+
+}  // namespace
+}  // namespace framefix
