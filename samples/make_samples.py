@@ -203,6 +203,12 @@ def rounded_box():
     return box.makeFillet(0.15, box.Edges)
 
 
+def tube():
+    """A machined bushing: a tube of radii 0.3 and 0.5, 0.6 long. No singular curve and no
+    concave edge: nothing but its ring cuts it into blocks (docs/algorithms.md#ring-cuts)."""
+    return Part.makeCylinder(0.5, 0.6).cut(Part.makeCylinder(0.3, 0.6))
+
+
 def l_prism():
     pts = [V(0, 0, 0), V(1, 0, 0), V(1, 0.5, 0), V(0.5, 0.5, 0), V(0.5, 1, 0), V(0, 1, 0), V(0, 0, 0)]
     return Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, 0.5))
@@ -212,7 +218,7 @@ SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinder
            notch_filleted, half_sphere_box_filleted, groove_filleted,
            notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow,
            groove_wide_filleted, box_arc_wide, box_arc_small, box_arc_curved_flat, box_arc_curved_steep, sphere,
-           rounded_box]
+           rounded_box, tube]
 
 
 def write_bad_inputs():

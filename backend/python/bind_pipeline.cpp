@@ -132,7 +132,9 @@ void bind_blocks(py::module_& m) {
         .def_readonly("convex_paths", &BlockDecomposition::convex_paths,
                       "indices of the snapped paths on a convex surface (they emit no sheet)")
         .def_readonly("curtain_corners", &BlockDecomposition::curtain_corners,
-                      "corner lines below those paths' feet that emit sheets instead");
+                      "corner lines below those paths' feet that emit sheets instead")
+        .def_readonly("ring_cuts", &BlockDecomposition::ring_cuts,
+                      "meridian sheets across rings (blocks that were solid tori, as a tube)");
 }
 
 void bind_hexmesh(py::module_& m) {

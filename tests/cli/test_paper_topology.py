@@ -119,6 +119,7 @@ EXPECT = {
     "groove_wide_filleted.step": groove_wide_filleted,
     "sphere.step": cube_in_sphere,
     "rounded_box.step": cube_in_sphere,
+    "tube.step": exactly(0, 0, 0, 0),  # not in the paper: a bushing, no singular curve
 }
 
 # Known deviations, kept visible: strict, so that a fix shows up as a failure to remove the mark.

@@ -13,7 +13,7 @@ import framefix
 from conftest import SAMPLES
 
 SAMPLE_NAMES = ["cube", "l_prism", "cylinder", "notch", "box_arc", "box_arc_curved", "half_sphere_box", "groove",
-                "two_cylinders", "sphere", "rounded_box"]
+                "two_cylinders", "sphere", "rounded_box", "tube"]
 
 
 def patch_labels(mesh, valence):

@@ -107,7 +107,7 @@ struct SheetSoup {                 // the separatrix sheets, for display (VTK)
     Triangles triangles;           // #S x 3 indices into points
     Eigen::VectorXi source;        // #S: source id of each triangle (index into `source_kind`)
     std::vector<std::string> source_kind;  // per source: "singular:<curve id>", "concave:<B-rep edge>",
-                                           // "snapped:<path index>"
+                                           // "snapped:<path index>", "ring:<block>"
 };
 
 struct SheetStats {
@@ -139,6 +139,8 @@ struct BlockDecomposition {
     // (docs/algorithms.md#curtain-corners). `curtain_corners` counts those lines.
     std::vector<int> convex_paths;
     int curtain_corners = 0;
+    // Meridian sheets across rings (blocks that were solid tori: a tube), docs/algorithms.md#ring-cuts.
+    int ring_cuts = 0;
     double h = 0;                  // mean mesh edge length used as the unit of the options
     double seconds = 0;            // total wall clock
     double seconds_sheets = 0, seconds_partition = 0, seconds_validation = 0;

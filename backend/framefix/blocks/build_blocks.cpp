@@ -11,6 +11,7 @@
 #include "framefix/blocks/blocks.h"
 #include "framefix/blocks/curtain_corners.h"
 #include "framefix/blocks/partition.h"
+#include "framefix/blocks/ring_cuts.h"
 #include "framefix/blocks/sheets.h"
 #include "framefix/blocks/validation.h"
 #include "framefix/core/disjoint_set.h"
@@ -174,6 +175,42 @@ void add_curtain_corners(const TetMesh& mesh, const FrameField& field, const Tet
     sources.insert(sources.end(), corners.begin(), corners.end());
 }
 
+// Cut edges from the sheets and the singular-curve tubes, the vertex partition, its cleaning,
+// then validation with the lens rounds (docs/algorithms.md#partition).
+Validated partition_and_validate(const TetMesh& mesh, const TetTopology& topo, const Points& singular,
+                                 const std::vector<int>& group, double h, const BlockOptions& options,
+                                 BlockDecomposition& out) {
+    const auto t1 = Clock::now();
+    std::vector<char> cut = cut_by_sheets(mesh, topo, out.sheets, options.threads);
+    cut_near_polylines(mesh, topo, singular, options.tube_radius * h, cut);
+    out.stats.cut_edges = int(std::count(cut.begin(), cut.end(), 1));
+    out.tet_block = clean_staircase(mesh, topo, partition_tets(mesh, topo, cut, options));
+    out.count = compact_labels(out.tet_block);
+    out.seconds_partition += since(t1);
+    const auto t2 = Clock::now();
+    Validated v = validate_blocks(mesh, topo, group, h, options, out);
+    for (int round = 0; round < options.lens_rounds && merge_lenses(v.shared, out); ++round) {
+        out.tet_block = clean_staircase(mesh, topo, out.tet_block);
+        out.count = compact_labels(out.tet_block);
+        v = validate_blocks(mesh, topo, group, h, options, out);
+    }
+    out.seconds_validation += since(t2);
+    return v;
+}
+
+// `more`'s triangles and sources after `soup`'s.
+void append_sheets(SheetSoup& soup, const SheetSoup& more) {
+    const Eigen::Index np = soup.points.rows(), nt = soup.triangles.rows();
+    const int ns = int(soup.source_kind.size());
+    soup.points.conservativeResize(np + more.points.rows(), 3);
+    soup.points.bottomRows(more.points.rows()) = more.points;
+    soup.triangles.conservativeResize(nt + more.triangles.rows(), 3);
+    soup.triangles.bottomRows(more.triangles.rows()) = more.triangles.array() + int(np);
+    soup.source.conservativeResize(nt + more.source.size());
+    soup.source.tail(more.source.size()) = more.source.array() + ns;
+    soup.source_kind.insert(soup.source_kind.end(), more.source_kind.begin(), more.source_kind.end());
+}
+
 }  // namespace
 
 BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
@@ -206,30 +243,25 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     out.sheets = build_sheets(mesh, field, locator, sources, singular, h, options, out.stats);
     out.seconds_sheets = since(t0);
 
-    // Partition.
-    const auto t1 = Clock::now();
-    std::vector<char> cut = cut_by_sheets(mesh, topo, out.sheets, options.threads);
-    cut_near_polylines(mesh, topo, singular, options.tube_radius * h, cut);
-    out.stats.cut_edges = int(std::count(cut.begin(), cut.end(), 1));
-    out.tet_block = clean_staircase(mesh, topo, partition_tets(mesh, topo, cut, options));
-    out.count = compact_labels(out.tet_block);
-    out.seconds_partition = since(t1);
-
-    // Validation; lenses join a neighbour and the blocks are validated again.
-    const auto t2 = Clock::now();
+    // Partition and validation; lenses join a neighbour and the blocks are validated again.
     const std::vector<int> group = surface_groups(mesh, topo, features, out.ignored_imprints, paths);
-    Validated v = validate_blocks(mesh, topo, group, h, options, out);
-    for (int round = 0; round < options.lens_rounds && merge_lenses(v.shared, out); ++round) {
-        out.tet_block = clean_staircase(mesh, topo, out.tet_block);
-        out.count = compact_labels(out.tet_block);
-        v = validate_blocks(mesh, topo, group, h, options, out);
+    Validated v = partition_and_validate(mesh, topo, singular, group, h, options, out);
+    // Rings (a tube): no sheet above cuts them across; meridian sheets do, then all again.
+    TraceOptions trace;
+    trace.step = options.step * h, trace.stop_distance = options.stop_distance * h, trace.singular_points = singular;
+    const std::vector<SheetSource> rings = ring_sources(mesh, field, locator, out, v.surface, h, trace);
+    if (!rings.empty()) {
+        const auto t3 = Clock::now();
+        append_sheets(out.sheets, build_sheets(mesh, field, locator, rings, singular, h, options, out.stats));
+        out.ring_cuts = int(rings.size());
+        out.seconds_sheets += since(t3);
+        v = partition_and_validate(mesh, topo, singular, group, h, options, out);
     }
     out.neighbour_pairs = check_conformity(v.faces, options.conform_tolerance * h);
     for (const BlockInfo& b : out.blocks)
         out.valid += b.valid, out.flat_edges += b.flat_edges, out.flat_corners += b.flat_corners;
     out.pairs = int(out.neighbour_pairs.size());
     for (const BlockPair& p : out.neighbour_pairs) out.conforming_pairs += p.conforming;
-    out.seconds_validation = since(t2);
     out.surfaces = block_surfaces(mesh, v.surface, v.faces);
     out.boundary = std::move(v.surface);
     out.faces = std::move(v.faces);

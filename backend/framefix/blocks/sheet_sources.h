@@ -19,8 +19,8 @@ struct SheetSeed {
 };
 
 struct SheetSource {
-    enum Kind { Singular, Concave, Imprinted, Snapped } kind = Singular;
-    // "singular:<curve id>" | "concave:<B-rep edge>" | "imprinted:<B-rep edge>" | "snapped:<path>"
+    enum Kind { Singular, Concave, Imprinted, Snapped, Ring } kind = Singular;
+    // "singular:<curve id>" | "concave:<B-rep edge>" | "imprinted:<B-rep edge>" | "snapped:<path>" | "ring:<block>"
     std::string name;
     std::vector<SheetSeed> seeds;      // in curve order, about one per h
     bool boundary_end[2] = {false, false};  // source end lies on the boundary: extend the sheet past it

@@ -395,7 +395,7 @@ SheetSoup build_sheets(const TetMesh& mesh, const FrameField& field, const TetLo
     }
     tracer.cross_extensions();
     tracer.finish();
-    stats.sources = int(sources.size());
+    stats.sources += int(sources.size());
     return soup;
 }
 

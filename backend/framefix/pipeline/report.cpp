@@ -173,6 +173,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"ignored_imprints", b.ignored_imprints},
             {"convex_paths", b.convex_paths},
             {"curtain_corners", b.curtain_corners},
+            {"ring_cuts", b.ring_cuts},
             {"blocks", blocks},
             {"neighbour_pairs", pairs},
             {"seconds", {{"sheets", b.seconds_sheets}, {"partition", b.seconds_partition},

@@ -1,11 +1,14 @@
 // Block decompositions with known answers (docs/algorithms.md#blocks): the cube is one block,
 // the L-shaped prism three, the cylinder five (a centre block and four around it; needs h <= 0.035
-// so that the outer blocks are >= 3 elements thick), the sphere seven (a cube and six around it),
+// so that the outer blocks are >= 3 elements thick), the sphere seven (a cube and six around it), the
+// tube four (quarters, cut at its ring),
 // the notch after boundary snapping seven, all valid hexahedra, all neighbour pairs conforming,
 // with the flat edge under the pocket reported.
 // Every decomposition must cover the part exactly once with face-connected blocks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <tuple>
 #include <memory>
@@ -172,6 +175,42 @@ TEST(BlocksOnSamples, SphereIsACubeAndSixBlocksAtTwoSizes) {
         EXPECT_EQ(inner, 1);
         expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
     }
+}
+
+// docs/algorithms.md#ring-cuts: the tube has no singular curve and no concave edge, so no sheet
+// of the graph cuts it; its one block would be a solid torus. Four meridian sheets at quarter
+// turns make four hexahedra, each a quarter of the tube (volume and angle), each meeting its two
+// neighbours face to face.
+TEST(BlocksOnSamples, TubeIsCutIntoFourQuartersAtTwoSizes) {
+    for (double f : {1.0, 0.7}) {
+        SCOPED_TRACE("tube at " + std::to_string(f));
+        const SampleRun& r = run("tube", 0, f);
+        ASSERT_EQ(r.result.singularities->summary.curves, 0);
+        EXPECT_EQ(r.blocks.ring_cuts, 4);
+        int ring_sources = 0;
+        for (const std::string& k : r.blocks.sheets.source_kind) ring_sources += k.rfind("ring:", 0) == 0;
+        EXPECT_EQ(ring_sources, 4);
+        ASSERT_EQ(r.blocks.count, 4);
+        expect_all_valid(r.blocks);
+        EXPECT_EQ(r.blocks.pairs, 4);
+        EXPECT_EQ(r.blocks.conforming_pairs, 4);
+        std::vector<double> angles;
+        for (const BlockInfo& b : r.blocks.blocks) {
+            EXPECT_NEAR(b.volume, 0.30159 / 4, 0.15 * 0.30159 / 4);
+            EXPECT_EQ(b.neighbours.size(), 2u);
+            angles.push_back(std::atan2(b.centroid.y(), b.centroid.x()));
+        }
+        std::sort(angles.begin(), angles.end());
+        for (int k = 0; k < 4; ++k)  // consecutive centroids a quarter turn apart
+            EXPECT_NEAR(std::remainder(angles[(k + 1) % 4] - angles[k], 2 * M_PI), M_PI / 2, 0.2);
+        expect_partition(r.result.mesh->tets, r.result.mesh->topology, r.blocks);
+    }
+}
+
+// A part without a ring gets no ring cut.
+TEST(BlocksOnSamples, NoRingNoRingCut) {
+    EXPECT_EQ(run("sphere", 0).blocks.ring_cuts, 0);
+    EXPECT_EQ(run("cylinder", 0.035).blocks.ring_cuts, 0);
 }
 
 // docs/algorithms.md#curtain-corners: the dome's snapped paths lie on a convex surface and emit

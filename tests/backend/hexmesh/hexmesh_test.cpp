@@ -145,6 +145,17 @@ TEST(HexMesh, TheSphereIsACubeUnderSixCushions) {
     }
 }
 
+// The tube cut at its ring into four quarters (docs/algorithms.md#ring-cuts): a structured
+// O-ring of hexes whose two circles are quads of sides about 0.08 (volume within 1 %).
+TEST(HexMesh, TheTubeIsFourQuartersOfHexes) {
+    for (double f : {1.0, 0.7}) {
+        const RunResult& r = run("tube", f);
+        expect_sound(r, "tube at " + std::to_string(f));
+        EXPECT_EQ(r.hexmesh->refinement.blocks_before, 4);
+        EXPECT_GT(r.hexmesh->quality.min_scaled_jacobian, 0.5);
+    }
+}
+
 TEST(HexMesh, BlockCountsMatchTheGraph) {
     // The notch: 7 blocks (one hex block each); the cylinder: 5. Each block the flat-edge
     // template refines becomes three. Shared edges carry one count, so the hexes of all blocks
