@@ -101,6 +101,18 @@ def test_blocks_of_the_half_sphere_box_report_its_convex_paths():
     assert framefix.report(r)["blocks"]["convex_paths"] == list(r.blocks.convex_paths)
 
 
+def test_blocks_of_the_tube_are_its_ring_cut_in_four_and_thin_refinement_can_be_turned_off():
+    """The tube's one block would be a solid torus: four meridian sheets cut it into quarters.
+    Every block is then valid, so no finer mesh is tried; remesh_thin=False says it is off."""
+    tube = str(SAMPLES / "tube.step")
+    r = framefix.build_blocks(tube, method="none")
+    assert (r.blocks.ring_cuts, r.blocks.count, r.blocks.valid) == (4, 4, 4)
+    thin = framefix.report(r)["blocks"]["thin_refinement"]
+    assert not thin["tried"] and "every block is valid" in thin["reason"]
+    off = framefix.report(framefix.build_blocks(tube, method="none", size_factor=COARSE, remesh_thin=False))
+    assert not off["blocks"]["thin_refinement"]["tried"] and "turned off" in off["blocks"]["thin_refinement"]["reason"]
+
+
 def test_a_shape_runs_like_its_file():
     shape = framefix.load_shape(CUBE)
     a = framefix.report(framefix.run(shape, "mesh", size_factor=COARSE))
