@@ -1,6 +1,7 @@
 #include "framefix/pipeline/thin_blocks.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "framefix/corrections/boundary_distance.h"
 #include "framefix/mesh/size_model.h"
@@ -11,7 +12,9 @@ namespace {
 constexpr double kEdgesAcross = 3;     // a thin block gets this many tet edges across
 constexpr double kMinSizeH = 1.0 / 3;  // and no edge shorter than h / 3: at most 27 x the tets there
 constexpr double kEndSkipH = 1.5;      // arc length from a boundary end where the curve enters the surface
-constexpr double kOnBoundaryH = 0.5;   // closer than this the curve lies on the surface (a snapped path)
+constexpr double kOnBoundaryH = 0.5;   // closer than this the curve or sheet lies on the surface
+constexpr double kSpotReachH = 1;      // a spot reaches this far past the nearest wall point
+const double kParallelCos = std::cos(30.0 * M_PI / 180);  // sheet and wall normals this close: a cushion
 
 // Arc length of each polyline point from the curve's start.
 std::vector<double> arc_lengths(const Points& p) {
@@ -20,49 +23,77 @@ std::vector<double> arc_lengths(const Points& p) {
     return s;
 }
 
+Eigen::Vector3d triangle_normal(const Points& P, int a, int b, int c) {
+    return (P.row(b) - P.row(a)).cross(P.row(c) - P.row(a)).transpose();
+}
+
+class SpotMaker {
+public:
+    SpotMaker(const TetMesh& mesh, double h, const std::function<bool(const Eigen::Vector3d&)>& counts)
+        : mesh_(mesh), boundary_(mesh), h_(h), counts_(counts) {}
+
+    // A spot about p when it lies 0.5 h to 3 h from the wall, and (normal given) the nearest wall
+    // triangle is parallel to it.
+    void add(const Eigen::Vector3d& p, const Eigen::Vector3d* normal = nullptr) {
+        if (counts_ && !counts_(p)) return;
+        const auto near = boundary_.near(p, kResolvedThicknessH * h_);
+        if (near.empty()) return;
+        const auto nearest = *std::min_element(near.begin(), near.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+        const double d = nearest.second;
+        if (d < kOnBoundaryH * h_) return;
+        if (normal) {
+            const Eigen::Vector3d wall = triangle_normal(mesh_.points, mesh_.boundary_faces(nearest.first, 0),
+                                                         mesh_.boundary_faces(nearest.first, 1), mesh_.boundary_faces(nearest.first, 2));
+            if (std::abs(wall.normalized().dot(normal->normalized())) < kParallelCos) return;
+        }
+        out.spots.push_back({p, d + kSpotReachH * h_, std::max(d / kEdgesAcross, kMinSizeH * h_)});
+        out.thinnest = out.thinnest > 0 ? std::min(out.thinnest, d) : d;
+    }
+
+    ThinSpots out;
+
+private:
+    const TetMesh& mesh_;
+    const BoundaryDistance boundary_;
+    double h_;
+    const std::function<bool(const Eigen::Vector3d&)>& counts_;
+};
+
 }  // namespace
 
-ThinFaces thin_block_faces(const TetMesh& mesh, const SingularityGraph& graph, double h,
-                           const std::function<bool(int)>& counts) {
-    ThinFaces out;
-    if (mesh.boundary_faces.rows() == 0 || h <= 0) return out;
-    const BoundaryDistance boundary(mesh);
-    const double reach = kResolvedThicknessH * h;
+ThinSpots thin_block_spots(const TetMesh& mesh, const SingularityGraph& graph, const SheetSoup& sheets, double h,
+                           const std::function<bool(const Eigen::Vector3d&)>& counts) {
+    if (mesh.boundary_faces.rows() == 0 || h <= 0) return {};
+    SpotMaker maker(mesh, h, counts);
     for (const SingularCurve& c : graph.curves) {
         const std::vector<double> s = arc_lengths(c.points);
         const double length = s.empty() ? 0.0 : s.back();
         auto boundary_end = [&](int k) { return !c.closed && c.ends[k] >= 0 && graph.nodes[size_t(c.ends[k])].boundary; };
-        const int nf = int(c.faces.size());
-        for (Eigen::Index i = 0; i < c.points.rows(); ++i) {
-            // points: end node, one centroid per singular triangle, end node
-            if (counts && nf > 0 && !counts(c.faces[size_t(std::clamp(int(i) - 1, 0, nf - 1))])) continue;
-            if ((boundary_end(0) && s[size_t(i)] < kEndSkipH * h) || (boundary_end(1) && length - s[size_t(i)] < kEndSkipH * h))
-                continue;
-            const auto near = boundary.near(c.points.row(i).transpose(), reach);
-            if (std::any_of(near.begin(), near.end(), [&](const auto& n) { return n.second < kOnBoundaryH * h; })) continue;
-            for (const auto& [tri, d] : near) {
-                const double size = std::max(d / kEdgesAcross, kMinSizeH * h);
-                auto [it, fresh] = out.face_size.emplace(mesh.face_tags[tri], size);
-                if (!fresh) it->second = std::min(it->second, size);
-                out.thinnest = out.thinnest > 0 ? std::min(out.thinnest, d) : d;
-            }
-        }
+        for (Eigen::Index i = 0; i < c.points.rows(); ++i)
+            if (!(boundary_end(0) && s[size_t(i)] < kEndSkipH * h) && !(boundary_end(1) && length - s[size_t(i)] < kEndSkipH * h))
+                maker.add(c.points.row(i).transpose());
     }
-    return out;
+    for (Eigen::Index t = 0; t < sheets.triangles.rows(); ++t) {
+        const int a = sheets.triangles(t, 0), b = sheets.triangles(t, 1), c = sheets.triangles(t, 2);
+        const Eigen::Vector3d normal = triangle_normal(sheets.points, a, b, c);
+        if (!(normal.norm() > 0)) continue;
+        const Eigen::Vector3d centroid = (sheets.points.row(a) + sheets.points.row(b) + sheets.points.row(c)).transpose() / 3;
+        maker.add(centroid, &normal);
+    }
+    return maker.out;
 }
 
-double estimate_thin_tets(const TetMesh& mesh, const ThinFaces& thin) {
-    // Fine tets over a finer face, in its edge lengths: on rounded_box, two_cylinders, HexMe's s10o
-    // and n05o this estimated 0.8 to 1.4 x the tets TetGen made.
+double estimate_thin_tets(const TetMesh& mesh, const SizeField& field) {
+    // Fine tets under a refined boundary triangle, in its edge lengths: on rounded_box 269k estimated,
+    // 256k made; HexMe's s13o 253k and 276k.
     constexpr double kBandEdges = 1.4;
     double tets = double(mesh.num_tets());
     for (Eigen::Index b = 0; b < mesh.boundary_faces.rows(); ++b) {
-        const auto it = thin.face_size.find(mesh.face_tags[b]);
-        if (it == thin.face_size.end()) continue;
         const Eigen::Vector3d p0 = mesh.points.row(mesh.boundary_faces(b, 0)), p1 = mesh.points.row(mesh.boundary_faces(b, 1)),
                               p2 = mesh.points.row(mesh.boundary_faces(b, 2));
-        const double area = 0.5 * (p1 - p0).cross(p2 - p0).norm(), s = it->second;
-        tets += area * kBandEdges * s / (kMeanTetVolumePerH3 * s * s * s);
+        const double s = field.at((p0 + p1 + p2) / 3);
+        if (s <= 0) continue;
+        tets += 0.5 * (p1 - p0).cross(p2 - p0).norm() * kBandEdges / (kMeanTetVolumePerH3 * s * s);
     }
     return tets;
 }

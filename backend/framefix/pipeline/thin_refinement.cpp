@@ -5,10 +5,12 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <set>
 #include <tuple>
 
 #include "framefix/pipeline/solve_stages.h"
 #include "framefix/pipeline/thin_blocks.h"
+#include "framefix/streamlines/tet_locator.h"
 
 namespace framefix {
 namespace {
@@ -32,27 +34,35 @@ std::string thin_blocks_skip(const RunResult& r) {
     return "";
 }
 
-// The finer mesh may have at most this many times the tets: those of a run at --size-factor 0.6,
-// the finest size the samples are checked at.
-constexpr double kMaxThinTetFactor = 1 / (0.6 * 0.6 * 0.6);
+// The finer mesh may have at most this many times the tets, a run at about --size-factor 0.55:
+// a cost bound. A thin cushion under a whole face needs the face's band at d / 3 (rounded_box and
+// HexMe's s13o: 5.2 and 5.7 x); a local strip far less (a stepped shaft: 2.9 x).
+constexpr double kMaxThinTetFactor = 6;
 
-// Topology face -> whether a tet on it is in an invalid block or a block with a non-conforming
-// pair: only there do thin blocks need a finer mesh.
-std::function<bool(int)> in_trouble(const RunResult& r) {
+// Whether a point lies in an invalid block or a block with a non-conforming pair: only there do
+// thin blocks need a finer mesh. Outside the mesh: no.
+std::function<bool(const Eigen::Vector3d&)> in_trouble(const RunResult& r, const TetLocator& locator) {
     const BlockDecomposition& b = *r.blocks;
     auto trouble = std::make_shared<std::vector<char>>(size_t(b.count), 0);
     for (int k = 0; k < b.count; ++k) (*trouble)[size_t(k)] = !b.blocks[size_t(k)].valid;
     for (const BlockPair& p : b.neighbour_pairs)
         if (!p.conforming) (*trouble)[size_t(p.a)] = (*trouble)[size_t(p.b)] = 1;
-    const TetTopology* topo = &r.mesh->topology;
     const Eigen::VectorXi* block = &b.tet_block;
-    return [trouble, topo, block](int f) {
-        for (int k = 0; k < 2; ++k) {
-            const int t = topo->face_tets(f, k);
-            if (t >= 0 && (*trouble)[size_t((*block)[t])]) return true;
-        }
-        return false;
+    return [trouble, block, &locator](const Eigen::Vector3d& p) {
+        const TetLocation where = locator.locate(p);
+        return where.tet >= 0 && (*trouble)[size_t((*block)[where.tet])];
     };
+}
+
+// B-rep faces with a boundary triangle the spots refine.
+int refined_faces(const TetMesh& mesh, const SizeField& field) {
+    std::set<int> faces;
+    for (Eigen::Index b = 0; b < mesh.boundary_faces.rows(); ++b) {
+        const Eigen::Vector3d c = (mesh.points.row(mesh.boundary_faces(b, 0)) + mesh.points.row(mesh.boundary_faces(b, 1)) +
+                                   mesh.points.row(mesh.boundary_faces(b, 2))).transpose() / 3;
+        if (field.at(c) > 0) faces.insert(mesh.face_tags[b]);
+    }
+    return int(faces.size());
 }
 
 }  // namespace
@@ -64,19 +74,23 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     t.count_before = b.count, t.valid_before = b.valid, t.pairs_before = b.pairs, t.conforming_before = b.conforming_pairs;
     t.reason = thin_blocks_skip(r);
     if (!t.reason.empty()) return t;
-    const ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.h, in_trouble(r));
-    t.faces = int(thin.face_size.size());
+    const TetLocator locator(r.mesh->tets, r.mesh->topology);
+    const ThinSpots thin = thin_block_spots(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(r, locator));
+    t.spots = int(thin.spots.size());
     t.thinnest = thin.thinnest;
-    if (thin.face_size.empty()) {
-        t.reason = "no singular curve runs closer than " + std::to_string(int(kResolvedThicknessH)) + " h to the boundary";
+    if (thin.spots.empty()) {
+        t.reason = "no singular curve or sheet next to an invalid block runs closer than " +
+                   std::to_string(int(kResolvedThicknessH)) + " h to the boundary";
         return t;
     }
-    t.min_size = std::min_element(thin.face_size.begin(), thin.face_size.end(),
-                                  [](const auto& a, const auto& c) { return a.second < c.second; })->second;
-    const double estimate = estimate_thin_tets(r.mesh->tets, thin);
+    const SizeField field(thin.spots);
+    t.faces = refined_faces(r.mesh->tets, field);
+    t.min_size = std::min_element(thin.spots.begin(), thin.spots.end(),
+                                  [](const SizeSpot& a, const SizeSpot& c) { return a.size < c.size; })->size;
+    const double estimate = estimate_thin_tets(r.mesh->tets, field);
     if (estimate > kMaxThinTetFactor * double(t.tets_before)) {
         t.reason = "the thin blocks need about " + std::to_string(long(estimate / 1000)) + "k tets, more than " +
-                   std::to_string(kMaxThinTetFactor).substr(0, 3) + " x this mesh's; a smaller --size-factor meshes them finer";
+                   std::to_string(int(kMaxThinTetFactor)) + " x this mesh's; a smaller --size-factor meshes them finer";
         return t;
     }
     const auto t0 = std::chrono::steady_clock::now();
@@ -84,7 +98,7 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     fine.remesh_thin = false;
     fine.stop_after = Stage::blocks;
     fine.mesh.size = r.mesh->tets.size;
-    fine.mesh.face_size = thin.face_size;
+    fine.mesh.size_spots = thin.spots;
     fine.progress = {};
     RunResult f;
     t.tried = true;
