@@ -25,17 +25,10 @@ struct Refiner {
     long flips_left = 0;                                   // guards against flip cycles on curved faces
     double max_edge = 0;
     const std::vector<double>& face_max_edge;
-    const std::function<double(const Eigen::Vector3d&)>& point_max_edge;
 
-    // Bound of edge a-b on `face`: the face's, or the point bound at its midpoint if smaller.
-    double bound(int face, int a, int b) const {
+    double bound(int face) const {
         const size_t f = size_t(face);
-        double out = f < face_max_edge.size() && face_max_edge[f] > 0 ? std::min(max_edge, face_max_edge[f]) : max_edge;
-        if (point_max_edge) {
-            const double p = point_max_edge(0.5 * (s.points[size_t(a)] + s.points[size_t(b)]));
-            if (p > 0) out = std::min(out, p);
-        }
-        return out;
+        return f < face_max_edge.size() && face_max_edge[f] > 0 ? std::min(max_edge, face_max_edge[f]) : max_edge;
     }
 
     double length(int a, int b) const { return (s.points[size_t(a)] - s.points[size_t(b)]).norm(); }
@@ -47,8 +40,8 @@ struct Refiner {
             const Key key = edge_key(a, b, kAnyIdStride);
             std::vector<int>& tris = edge_tris[key];
             // Pushed again by a second face with a smaller bound; a split edge's entries are skipped.
-            const double b_face = bound(s.triangles[size_t(tri)].face, a, b);
-            if (tris.empty() || b_face < bound(s.triangles[size_t(tris[0])].face, a, b))
+            const double b_face = bound(s.triangles[size_t(tri)].face);
+            if (tris.empty() || b_face < bound(s.triangles[size_t(tris[0])].face))
                 queue.push({length(a, b) * (max_edge / b_face), key});
             tris.push_back(tri);
         }
@@ -214,9 +207,8 @@ struct Refiner {
 }  // namespace
 
 void refine_surface(TaggedSurface& surface, const SurfaceEvaluator& eval, double max_edge, int max_points,
-                    const std::vector<double>& face_max_edge,
-                    const std::function<double(const Eigen::Vector3d&)>& point_max_edge) {
-    Refiner r{surface, eval, {}, {}, {}, 0, max_edge, face_max_edge, point_max_edge};
+                    const std::vector<double>& face_max_edge) {
+    Refiner r{surface, eval, {}, {}, {}, 0, max_edge, face_max_edge};
     for (int t = 0; t < int(surface.triangles.size()); ++t) r.link(t);
     r.flips_left = 100L * long(surface.triangles.size()) + 100L * long(std::max(0, max_points));
     for (const auto& entry : r.edge_tris) r.to_check.push_back(entry.first);

@@ -46,9 +46,8 @@ struct SurfaceEvaluator {
 // Splits edges longer than max_edge (model units), longest first, each split bisecting both
 // triangles of the edge. Stops after max_points new points (the caller sized the budget).
 // face_max_edge[f] > 0 is a smaller bound on face f (indexed by face, any length); an edge
-// between two faces takes the smaller one. point_max_edge(midpoint) > 0 is a smaller bound there.
+// between two faces takes the smaller one.
 void refine_surface(TaggedSurface& surface, const SurfaceEvaluator& eval, double max_edge, int max_points,
-                    const std::vector<double>& face_max_edge = {},
-                    const std::function<double(const Eigen::Vector3d&)>& point_max_edge = {});
+                    const std::vector<double>& face_max_edge = {});
 
 }  // namespace framefix

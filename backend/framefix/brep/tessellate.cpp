@@ -3,7 +3,6 @@
 // feature edges as tagged segments.
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <vector>
 
 #include <map>
@@ -304,10 +303,7 @@ SurfaceMesh tessellate(const BrepModel& model, const FeatureSet& features, const
                                         ": give a face of the part and a positive size");
             face_max[size_t(face)] = kMaxEdge * size;
         }
-        const SizeField spots(options.size_spots);
-        const auto point_max = [&spots](const Eigen::Vector3d& p) { return kMaxEdge * spots.at(p); };
-        refine_surface(b.surface, geometry.evaluator(), kMaxEdge * h, int(std::min(budget, 2e9)), face_max,
-                       spots.empty() ? std::function<double(const Eigen::Vector3d&)>() : point_max);
+        refine_surface(b.surface, geometry.evaluator(), kMaxEdge * h, int(std::min(budget, 2e9)), face_max);
         return to_surface_mesh(b.surface, features, copied.vertices.Extent());
     });
 }

@@ -1,12 +1,10 @@
 #pragma once
 // The boundary of a solid as a triangulated PLC: what OCCT's tessellation hands to TetGen.
 #include <map>
-#include <vector>
 
 #include <Eigen/Core>
 
 #include "framefix/mesh/size_model.h"
-#include "framefix/mesh/size_spots.h"
 #include "framefix/mesh/types.h"
 
 namespace framefix {
@@ -32,8 +30,6 @@ struct MeshOptions {
     // B-rep face (1-based) -> a smaller edge length on it (the fillet correction's fillet
     // surfaces); TetGen's quality bound grades the tets from there to `size`.
     std::map<int, double> face_size;
-    // Balls asking for shorter edges on the surface inside them (the blocks' thin-block refinement).
-    std::vector<SizeSpot> size_spots;
     // A size coarser than the default coarsens only faces wide enough for it: narrower ones keep
     // 2.5 edges across, or the default size (pipeline/mesh_attempts.cpp).
     bool keep_narrow_faces = true;

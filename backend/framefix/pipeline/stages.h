@@ -105,8 +105,8 @@ struct ThinRefinement {
     bool tried = false;          // false: the reason says why not
     bool kept = false;           // the finer run's mesh, field, graph and blocks are the run's
     std::string reason;
-    int spots = 0;               // thin places, each a ball asking for shorter edges
-    int faces = 0;               // B-rep faces with triangles in a spot
+    int spots = 0;               // thin places counted (curve points, sheet triangles parallel to a wall)
+    int faces = 0;               // B-rep faces meshed finer
     double min_size = 0;         // their finest edge length, model units
     double thinnest = 0;         // the smallest singular-curve-to-boundary distance, model units
     long tets_before = 0, tets_after = 0;

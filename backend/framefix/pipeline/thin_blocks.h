@@ -2,12 +2,11 @@
 // Blocks thinner than the tet mesh resolves (docs/algorithms.md#thin-blocks): where a singular
 // curve, or a sheet parallel to the boundary, runs closer than 3 h to the boundary, the block
 // between them is 1-2 tets thick and the partition cannot carve it. The run meshes the part again
-// with shorter surface edges there, and keeps the finer blocks when they are better.
+// with shorter edges on the faces there, and keeps the finer blocks when they are better.
 #include <functional>
-#include <vector>
+#include <map>
 
 #include "framefix/blocks/blocks.h"
-#include "framefix/mesh/size_spots.h"
 #include "framefix/mesh/tet_mesh.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/singularities/singularity_graph.h"
@@ -17,30 +16,31 @@ namespace framefix {
 // Blocks at least this many mean edge lengths thick are resolved (docs/algorithms.md#block-validation).
 constexpr double kResolvedThicknessH = 3;
 
-struct ThinSpots {
-    std::vector<SizeSpot> spots;  // balls asking for d / 3 edges about the thin places
-    double thinnest = 0;          // smallest distance to the boundary counted, model units (0: none)
+struct ThinFaces {
+    std::map<int, double> face_size;  // B-rep face (1-based) -> edge length that resolves its thin blocks
+    int places = 0;                   // thin places counted (curve points, sheet triangles)
+    double thinnest = 0;              // smallest distance to the boundary counted, model units (0: none)
 };
 
-// Thin places, each a ball of radius d + h asking for edges of d / 3 (no shorter than h / 3), d its
-// distance (< 3 h) to the nearest boundary triangle:
+// Thin places, at a distance d < 3 h from the nearest boundary triangle, each asking for edges of
+// d / 3 (no shorter than h / 3) on a B-rep face:
 // - singular-curve points, except within 1.5 h of the curve's boundary end (where a curve enters
-//   the surface it is not a thin block);
-// - sheet triangles whose normal is within 30 degrees of that boundary triangle's (a sheet
-//   parallel to the wall: a cushion under it), except those ending on the wall.
+//   the surface it is not a thin block): every face within 3 h, at its own distance;
+// - sheet triangles whose normal is within 30 degrees of the nearest boundary triangle's (a sheet
+//   parallel to the wall: a cushion under it): that triangle's face.
 // Places within 0.5 h of the boundary (a curve or sheet on it) do not count, nor places `counts`
 // rejects (null: all count).
-ThinSpots thin_block_spots(const TetMesh& mesh, const SingularityGraph& graph, const SheetSoup& sheets, double h,
+ThinFaces thin_block_faces(const TetMesh& mesh, const SingularityGraph& graph, const SheetSoup& sheets, double h,
                            const std::function<bool(const Eigen::Vector3d&)>& counts = {});
 
-// Tets of the part meshed again with those spots: the mesh's own plus a band about 1.4 of the
-// finer edges deep under each boundary triangle a spot refines (TetGen's grading spreads the rest).
-double estimate_thin_tets(const TetMesh& mesh, const SizeField& field);
+// Tets of the part meshed again with `thin`'s face sizes: the mesh's own plus a band about 1.4 of
+// the finer edges deep over each finer face (TetGen's grading spreads the rest).
+double estimate_thin_tets(const TetMesh& mesh, const ThinFaces& thin);
 
 // After the blocks stage of `r` (run with `options`): when its blocks are not all valid and
-// conforming, its graph is hex-meshable and thin_block_spots finds thin places next to invalid
+// conforming, its graph is hex-meshable and thin_block_faces finds thin places next to invalid
 // blocks within the tet budget (at most 6 x the tets), the whole run again from the mesh stage
-// with those spots. The finer run's mesh, field, graph, correction and blocks replace r's when
+// with those face sizes. The finer run's mesh, field, graph, correction and blocks replace r's when
 // its blocks are better. Never throws for the finer run's failures: the reason says what failed.
 ThinRefinement refine_thin_blocks(const RunOptions& options, RunResult& r);
 

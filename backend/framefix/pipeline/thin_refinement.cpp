@@ -5,7 +5,6 @@
 #include <functional>
 #include <memory>
 #include <string>
-#include <set>
 #include <tuple>
 
 #include "framefix/pipeline/solve_stages.h"
@@ -54,17 +53,6 @@ std::function<bool(const Eigen::Vector3d&)> in_trouble(const RunResult& r, const
     };
 }
 
-// B-rep faces with a boundary triangle the spots refine.
-int refined_faces(const TetMesh& mesh, const SizeField& field) {
-    std::set<int> faces;
-    for (Eigen::Index b = 0; b < mesh.boundary_faces.rows(); ++b) {
-        const Eigen::Vector3d c = (mesh.points.row(mesh.boundary_faces(b, 0)) + mesh.points.row(mesh.boundary_faces(b, 1)) +
-                                   mesh.points.row(mesh.boundary_faces(b, 2))).transpose() / 3;
-        if (field.at(c) > 0) faces.insert(mesh.face_tags[b]);
-    }
-    return int(faces.size());
-}
-
 }  // namespace
 
 ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
@@ -75,19 +63,18 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     t.reason = thin_blocks_skip(r);
     if (!t.reason.empty()) return t;
     const TetLocator locator(r.mesh->tets, r.mesh->topology);
-    const ThinSpots thin = thin_block_spots(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(r, locator));
-    t.spots = int(thin.spots.size());
+    const ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(r, locator));
+    t.spots = thin.places;
+    t.faces = int(thin.face_size.size());
     t.thinnest = thin.thinnest;
-    if (thin.spots.empty()) {
+    if (thin.face_size.empty()) {
         t.reason = "no singular curve or sheet next to an invalid block runs closer than " +
                    std::to_string(int(kResolvedThicknessH)) + " h to the boundary";
         return t;
     }
-    const SizeField field(thin.spots);
-    t.faces = refined_faces(r.mesh->tets, field);
-    t.min_size = std::min_element(thin.spots.begin(), thin.spots.end(),
-                                  [](const SizeSpot& a, const SizeSpot& c) { return a.size < c.size; })->size;
-    const double estimate = estimate_thin_tets(r.mesh->tets, field);
+    t.min_size = std::min_element(thin.face_size.begin(), thin.face_size.end(),
+                                  [](const auto& a, const auto& c) { return a.second < c.second; })->second;
+    const double estimate = estimate_thin_tets(r.mesh->tets, thin);
     if (estimate > kMaxThinTetFactor * double(t.tets_before)) {
         t.reason = "the thin blocks need about " + std::to_string(long(estimate / 1000)) + "k tets, more than " +
                    std::to_string(int(kMaxThinTetFactor)) + " x this mesh's; a smaller --size-factor meshes them finer";
@@ -98,7 +85,7 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     fine.remesh_thin = false;
     fine.stop_after = Stage::blocks;
     fine.mesh.size = r.mesh->tets.size;
-    fine.mesh.size_spots = thin.spots;
+    fine.mesh.face_size = thin.face_size;
     fine.progress = {};
     RunResult f;
     t.tried = true;

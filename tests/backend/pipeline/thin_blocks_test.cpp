@@ -1,5 +1,5 @@
-// Blocks thinner than the mesh resolves (pipeline/thin_blocks.h): where the surface gets shorter
-// edges, and how short, for singular curves and sheets placed by hand in the unit cube.
+// Blocks thinner than the mesh resolves (pipeline/thin_blocks.h): which faces get a finer mesh,
+// and how fine, for singular curves and sheets placed by hand in the unit cube.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,57 +25,65 @@ const MeshStage& cube_mesh() {
     return *r.mesh;
 }
 
-// An interior curve (no end nodes) along y from `a` to `b`, points every 0.05.
-SingularCurve curve_along_y(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int first_face = 0) {
-    SingularCurve c;
-    const int n = int(std::round((b - a).norm() / 0.05)) + 1;
-    c.points.resize(n, 3);
-    for (int i = 0; i < n; ++i) c.points.row(i) = (a + (b - a) * double(i) / (n - 1)).transpose();
-    for (int i = 0; i + 2 < n; ++i) c.faces.push_back(first_face + i);
-    return c;
+// The B-rep face whose triangles lie in the plane coordinate `axis` = `value`.
+int face_at(const TetMesh& m, int axis, double value) {
+    for (Eigen::Index b = 0; b < m.boundary_faces.rows(); ++b) {
+        bool on = true;
+        for (int k = 0; k < 3; ++k) on = on && std::abs(m.points(m.boundary_faces(b, k), axis) - value) < 1e-9;
+        if (on) return m.face_tags[b];
+    }
+    return -1;
 }
 
 const SheetSoup kNoSheets;
 
-// The size the spots ask for at p (0: none).
-double size_at(const ThinSpots& t, const Eigen::Vector3d& p) { return SizeField(t.spots).at(p); }
+// An interior curve (no end nodes) along y from `a` to `b`, points every 0.05.
+SingularCurve curve_along_y(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    SingularCurve c;
+    const int n = int(std::round((b - a).norm() / 0.05)) + 1;
+    c.points.resize(n, 3);
+    for (int i = 0; i < n; ++i) c.points.row(i) = (a + (b - a) * double(i) / (n - 1)).transpose();
+    for (int i = 0; i + 2 < n; ++i) c.faces.push_back(i);
+    return c;
+}
 
-TEST(ThinBlocks, ACurveNearAWallRefinesTheWallUnderIt) {
-    // 0.2 from x = 0 (2 h): the wall under it gets 0.2 / 3 within about h of the foot of each
-    // curve point; z = 0, z = 1 (0.5 away) and x = 1 (0.8) get nothing.
+TEST(ThinBlocks, ACurveNearAWallRefinesTheWallsWithinThreeH) {
+    // 0.2 from x = 0 (2 h): that wall gets 0.2 / 3; its ends 0.2 from y = 0 and y = 1 refine those
+    // walls to 0.2 / 3 as well; z = 0, z = 1 (0.5 away) and x = 1 (0.8) are beyond 3 h.
     const TetMesh& m = cube_mesh().tets;
     SingularityGraph g;
-    g.curves.push_back(curve_along_y({0.2, 0.3, 0.5}, {0.2, 0.7, 0.5}));
-    const ThinSpots t = thin_block_spots(m, g, kNoSheets, kH);
-    ASSERT_EQ(t.spots.size(), 9u);
+    g.curves.push_back(curve_along_y({0.2, 0.2, 0.5}, {0.2, 0.8, 0.5}));
+    const ThinFaces t = thin_block_faces(m, g, kNoSheets, kH);
+    ASSERT_EQ(t.face_size.size(), 3u);
+    for (auto [axis, value] : {std::pair{0, 0.0}, {1, 0.0}, {1, 1.0}}) {
+        const int f = face_at(m, axis, value);
+        ASSERT_TRUE(t.face_size.count(f)) << "axis " << axis << " at " << value;
+        EXPECT_NEAR(t.face_size.at(f), 0.2 / 3, 1e-9);
+    }
     EXPECT_NEAR(t.thinnest, 0.2, 1e-9);
-    EXPECT_NEAR(size_at(t, {0, 0.5, 0.5}), 0.2 / 3, 1e-9);
-    EXPECT_NEAR(size_at(t, {0, 0.5, 0.6}), 0.2 / 3, 1e-9);  // within d + h of a curve point
-    EXPECT_EQ(size_at(t, {0, 0.5, 0.9}), 0);                 // beyond
-    EXPECT_EQ(size_at(t, {0.5, 0.5, 0}), 0);
-    EXPECT_EQ(size_at(t, {1, 0.5, 0.5}), 0);
-    EXPECT_GT(estimate_thin_tets(m, SizeField(t.spots)), double(m.num_tets()));
+    EXPECT_GT(estimate_thin_tets(m, t), double(m.num_tets()));
 }
 
 TEST(ThinBlocks, SizesStopAtAThirdOfH) {
     const TetMesh& m = cube_mesh().tets;
     SingularityGraph g;
     g.curves.push_back(curve_along_y({0.07, 0.4, 0.5}, {0.07, 0.6, 0.5}));  // 0.7 h from x = 0
-    const ThinSpots t = thin_block_spots(m, g, kNoSheets, kH);
-    ASSERT_FALSE(t.spots.empty());
-    EXPECT_NEAR(size_at(t, {0, 0.5, 0.5}), kH / 3, 1e-9);
+    const ThinFaces t = thin_block_faces(m, g, kNoSheets, kH);
+    ASSERT_EQ(t.face_size.size(), 1u);
+    EXPECT_NEAR(t.face_size.at(face_at(m, 0, 0.0)), kH / 3, 1e-9);
 }
 
 TEST(ThinBlocks, CurvesOnTheWallCurvesFarFromItAndRejectedPointsCountForNothing) {
     const TetMesh& m = cube_mesh().tets;
     SingularityGraph g;
     g.curves.push_back(curve_along_y({0.03, 0.4, 0.5}, {0.03, 0.6, 0.5}));  // on the wall: a snapped path
-    g.curves.push_back(curve_along_y({0.5, 0.4, 0.5}, {0.5, 0.6, 0.5}));    // 4 h from every wall
-    EXPECT_TRUE(thin_block_spots(m, g, kNoSheets, kH).spots.empty());
+    g.curves.push_back(curve_along_y({0.5, 0.4, 0.5}, {0.5, 0.6, 0.5}));    // 5 h from every wall
+    EXPECT_TRUE(thin_block_faces(m, g, kNoSheets, kH).face_size.empty());
     SingularityGraph near;
-    near.curves.push_back(curve_along_y({0.2, 0.3, 0.5}, {0.2, 0.7, 0.5}));
-    EXPECT_TRUE(thin_block_spots(m, near, kNoSheets, kH, [](const Eigen::Vector3d& p) { return p.y() > 0.8; }).spots.empty());
-    EXPECT_EQ(thin_block_spots(m, near, kNoSheets, kH, [](const Eigen::Vector3d& p) { return p.y() < 0.5; }).spots.size(), 4u);
+    near.curves.push_back(curve_along_y({0.2, 0.2, 0.5}, {0.2, 0.8, 0.5}));
+    EXPECT_TRUE(thin_block_faces(m, near, kNoSheets, kH, [](const Eigen::Vector3d& p) { return p.y() > 0.9; }).face_size.empty());
+    // Its half below y = 0.5 reaches the walls x = 0 and y = 0, not y = 1.
+    EXPECT_EQ(thin_block_faces(m, near, kNoSheets, kH, [](const Eigen::Vector3d& p) { return p.y() < 0.5; }).face_size.size(), 2u);
 }
 
 TEST(ThinBlocks, ACurveEnteringTheWallIsNotThinWhereItEnters) {
@@ -91,13 +99,14 @@ TEST(ThinBlocks, ACurveEnteringTheWallIsNotThinWhereItEnters) {
     g.nodes[1].boundary = true;
     c.ends[0] = 0, c.ends[1] = 1;
     g.curves.push_back(c);
-    const ThinSpots t = thin_block_spots(m, g, kNoSheets, kH);
+    const ThinFaces t = thin_block_faces(m, g, kNoSheets, kH);
+    ASSERT_EQ(t.face_size.size(), 1u);
     EXPECT_NEAR(t.thinnest, 0.16, 1e-9);
-    EXPECT_NEAR(size_at(t, {0, 0.5, 0.5}), 0.16 / 3, 1e-9);
+    EXPECT_NEAR(t.face_size.at(face_at(m, 0, 0.0)), 0.16 / 3, 1e-9);
 }
 
-// A square sheet 0.15 above the floor z = 0 and parallel to it is a cushion's top: the floor
-// under it is refined. The same square standing upright (across the floor) is not.
+// A square sheet 0.15 above the floor z = 0 and parallel to it is a cushion's top: the floor gets
+// 0.15 / 3, and only the floor. The same square standing upright (across the floor) is no cushion.
 TEST(ThinBlocks, OnlySheetsParallelToTheWallMakeACushion) {
     const TetMesh& m = cube_mesh().tets;
     auto square = [](bool flat) {
@@ -110,10 +119,11 @@ TEST(ThinBlocks, OnlySheetsParallelToTheWallMakeACushion) {
         return s;
     };
     const SingularityGraph none;
-    const ThinSpots flat = thin_block_spots(m, none, square(true), kH);
-    ASSERT_EQ(flat.spots.size(), 2u);
-    EXPECT_NEAR(size_at(flat, {0.5, 0.5, 0}), 0.05, 1e-9);
-    EXPECT_TRUE(thin_block_spots(m, none, square(false), kH).spots.empty());
+    const ThinFaces flat = thin_block_faces(m, none, square(true), kH);
+    ASSERT_EQ(flat.face_size.size(), 1u);
+    EXPECT_NEAR(flat.face_size.at(face_at(m, 2, 0.0)), 0.05, 1e-9);
+    EXPECT_EQ(flat.places, 2);
+    EXPECT_TRUE(thin_block_faces(m, none, square(false), kH).face_size.empty());
 }
 
 }  // namespace
