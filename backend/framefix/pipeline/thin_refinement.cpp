@@ -35,7 +35,7 @@ std::string thin_blocks_skip(const RunResult& r) {
 
 // The finer mesh may have at most this many times the tets, a run at about --size-factor 0.55:
 // a cost bound. A thin cushion under a whole face needs the face's band at d / 3 (rounded_box and
-X
+// HexMe's s13o: 5.2 and 5.7 x); a few faces less (a stepped shaft: 4.1 x).
 constexpr double kMaxThinTetFactor = 6;
 
 // Whether a point lies in an invalid block or a block with a non-conforming pair: only there do
