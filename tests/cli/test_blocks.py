@@ -57,9 +57,9 @@ def test_blocks_without_correction_has_no_correction_section(tmp_path):
     assert not (tmp_path / "snapped_curves.vtk").exists()
 
 
-def thin_blocks(tmp_path, *flags):
-    code, out, err = run("blocks", SAMPLES / "rounded_box.step", "--method", "none", "--out", tmp_path, "--quiet",
-                         *flags, timeout=600)
+def thin_blocks(tmp_path, *flags, command="blocks"):
+    code, out, err = run(command, SAMPLES / "rounded_box.step", "--method", "none", "--out", tmp_path, "--quiet",
+                         *flags, timeout=900)
     assert code == 0, err
     return json.loads((tmp_path / "report.json").read_text()), out
 
@@ -69,8 +69,10 @@ def test_rounded_box_thin_cushions_get_a_finer_mesh(tmp_path, factor):
     """rounded_box: a box inside (20 valence-3 curves) under cushions about 0.1 thick, under 3 h
     at both sizes, so the first mesh cannot carve them. Meshed again with shorter surface edges
     under the curves and under the sheets parallel to the walls, within the tet budget (6 x), it
-    gives the graph's 7 blocks, the box and six cushions, all valid and meeting face to face."""
-    r, out = thin_blocks(tmp_path, "--size-factor", factor)
+    gives the graph's 7 blocks, the box and six cushions, all valid and meeting face to face. At the
+    default size they are meshed too: no hex inverted, the volume within 1 % (the corners of a
+    cushion one mesh edge apart stay two corners of the complex)."""
+    r, out = thin_blocks(tmp_path, "--size-factor", factor, command="hexmesh" if factor == "1" else "blocks")
     t, b = r["blocks"]["thin_refinement"], r["blocks"]
     assert t["tried"] and t["kept"], t["reason"]
     assert t["before"]["valid"] < t["before"]["count"] or t["before"]["count"] < 7
@@ -81,6 +83,11 @@ def test_rounded_box_thin_cushions_get_a_finer_mesh(tmp_path, factor):
     cube = max(b["blocks"], key=lambda k: k["volume"])
     assert sorted(cube["neighbours"]) == sorted(k["id"] for k in b["blocks"] if k is not cube)
     assert "meshed again finer next to 26 faces" in out
+    if factor == "1":
+        h = r["hexmesh"]
+        assert h["done"], h["reason"]
+        assert h["inverted"] == 0 and h["min_scaled_jacobian"] > 0.1
+        assert abs(h["volume"] - h["part_volume"]) < 0.01 * h["part_volume"]
 
 
 def test_thin_refinement_can_be_turned_off_and_is_not_tried_when_blocks_are_valid(tmp_path):

@@ -1,6 +1,7 @@
 #include "framefix/hexmesh/block_structure.h"
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <queue>
 #include <unordered_map>
@@ -36,12 +37,40 @@ std::vector<int> corners_of_patch(const BlockFaces& f, int patch) {
     return out;
 }
 
+// Union of corner nodes that never puts two corners of one block into one set: where two
+// corners of a block lie one mesh edge apart (a rounded box's cushions at its radial curves), a
+// neighbour's cluster can touch both, and the block would meet itself at a corner.
+class CornerSets {
+public:
+    CornerSets(const std::vector<int>& block_of) : sets_(int(block_of.size())), blocks_(block_of.size()) {
+        for (size_t i = 0; i < block_of.size(); ++i) blocks_[i] = {block_of[i]};
+    }
+    int find(int a) { return sets_.find(a); }
+    void unite(int a, int b) {
+        a = sets_.find(a), b = sets_.find(b);
+        if (a == b) return;
+        std::vector<int> both;
+        std::set_union(blocks_[size_t(a)].begin(), blocks_[size_t(a)].end(), blocks_[size_t(b)].begin(),
+                       blocks_[size_t(b)].end(), std::back_inserter(both));
+        if (both.size() < blocks_[size_t(a)].size() + blocks_[size_t(b)].size()) return;  // a block twice
+        sets_.unite(a, b);
+        blocks_[size_t(sets_.find(a))] = std::move(both);
+    }
+
+private:
+    DisjointSet sets_;
+    std::vector<std::vector<int>> blocks_;  // per root: the blocks of its corners, ascending
+};
+
 // Global corner of every (block, corner): corners sharing a mesh vertex, and the corners of a
-// shared face matched nearest to nearest, are one. Returns per block its corners' global ids.
+// shared face matched nearest to nearest, are one, but never two corners of one block. Returns
+// per block its corners' global ids.
 std::vector<std::vector<int>> merge_corners(const TetMesh& mesh, const BlockDecomposition& d, BlockComplex& cx) {
     std::vector<int> offset(d.count + 1, 0);
     for (int b = 0; b < d.count; ++b) offset[b + 1] = offset[b] + int(d.faces[b].corner_vertices.size());
-    DisjointSet sets(offset.back());
+    std::vector<int> block_of(size_t(offset.back()));
+    for (int b = 0; b < d.count; ++b) std::fill(block_of.begin() + offset[b], block_of.begin() + offset[b + 1], b);
+    CornerSets sets(block_of);
     std::unordered_map<int, int> node_of_vertex;
     for (int b = 0; b < d.count; ++b)
         for (int c = 0; c < int(d.faces[b].corner_vertices.size()); ++c)

@@ -228,10 +228,12 @@ TEST(HexMesh, OrderTwoPutsEdgeMidpointsOnThePart) {
 
 TEST(HexMesh, PairsWhoseCornersAreOffTheBlocksToleranceAreStillMeshedFaceToFace) {
     // With a conformity tolerance far below h every notch pair fails the blocks' corner test,
-    // yet each shares one face with the same 4 corners: the hex mesh is the same sound mesh.
+    // yet each shares one face with the same 4 corners: the hex mesh is the same sound mesh. The
+    // same mesh: no finer one for the "non-conforming" pairs (docs/algorithms.md#thin-blocks).
     RunOptions options;
     options.stop_after = Stage::hexmesh;
     options.blocks.conform_tolerance = 1e-6;
+    options.remesh_thin = false;
     const RunResult r = framefix::run(RunInput::file(sample("notch")), options);
     ASSERT_TRUE(r.blocks && r.hexmesh);
     EXPECT_EQ(r.blocks->conforming_pairs, 0);
