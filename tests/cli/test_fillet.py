@@ -106,9 +106,9 @@ def test_groove_with_its_rims_filleted_turns_smooth(tmp_path, flags):
 @pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
 def test_wide_groove_with_its_rims_filleted_gets_the_papers_four_nodes(tmp_path, flags):
     """Fig. 5b: with all four curves of the groove filleted (r = 0.075 on the floor arcs, 0.053 on
-    the rims, more than h), the new curves along the groove join the two 3-5 curves in four valid
-    internal nodes: (1, 3) on each floor arc, (2, 2) and (4, 0) where the rims' valence-3 curves
-    meet them."""
+    the rims; h = 0.06 at the default size), the new curves along the groove join the two 3-5
+    curves in four valid internal nodes: (1, 3) at each floor arc, (2, 2) under the outer rim and
+    (4, 0) under the inner one."""
     r, out = fillet(tmp_path, "groove_wide.step", "--fillet-rims", *flags)
     check_filleted(r, out)
     assert len(r["correction"]["fillets"]) == 4
