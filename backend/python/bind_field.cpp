@@ -48,6 +48,7 @@ void bind_field(py::module_& m) {
         .def_readonly("energy_history", &FrameField::energy_history)
         .def_readonly("change_history", &FrameField::change_history, "|q_k - q_k-1|_M / |q_k|_M per MBO iteration")
         .def_readonly("iterations", &FrameField::iterations)
+        .def_readonly("floor_iteration", &FrameField::floor_iteration)
         .def_readonly("converged", &FrameField::converged)
         .def_readonly("extrapolations", &FrameField::extrapolations)
         .def_readonly("solver", &FrameField::solver);

@@ -50,6 +50,9 @@ struct FieldOptions {
     double tau_power = 3;        // tau_k = max(tau_0 / k^tau_power, h_mean^2)
     double cg_tolerance = 1e-6;  // relative residual of each MBO diffusion solve (init: x 1e-2)
     bool reorder = true;         // solve on a reverse Cuthill-McKee vertex numbering (cache locality)
+    // Projected CG adds a two-level coarse correction from this many vertices on (0: never;
+    // docs/algorithms.md#coarse-correction).
+    int coarse_min_vertices = 100000;
     bool extrapolate = false;    // at the tau floor, jump along a drifting slow mode (Aitken; evaluated, off)
 };
 
@@ -67,6 +70,7 @@ struct FrameField {
     std::vector<double> energy_history;  // one entry per MBO iteration
     std::vector<double> change_history;  // one entry per MBO iteration: |q_k - q_k-1|_M / |q_k|_M
     int iterations = 0;              // MBO iterations run
+    int floor_iteration = 0;         // first MBO iteration with tau at its floor h_mean^2
     int linear_iterations = 0;       // CG iterations summed over all solves (direct: number of solves)
     std::vector<int> solve_iterations;  // per solve: linear init, then one per diffusion
     bool converged = false;          // stopped on the change test (not on max_iterations)

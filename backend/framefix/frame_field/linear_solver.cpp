@@ -12,11 +12,13 @@ LinearSolveStats solve_direct(ConstrainedSolver::Direct& d, double mw, double sw
 void destroy_direct(ConstrainedSolver::Direct* d);
 
 ConstrainedSolver::ConstrainedSolver(const P1System& sys, const ConstrainedSpace& space, SparseSolver kind,
-                                     int threads)
+                                     int threads, int coarse_min_vertices)
     : sys_(sys), space_(space), kind_(kind), threads_(threads) {
     FF_ASSERT(sys.rows() == space.vertices());
     if (kind != SparseSolver::ConjugateGradient)
         direct_ = std::unique_ptr<Direct, void (*)(Direct*)>(make_direct(sys, space, kind), destroy_direct);
+    else if (coarse_min_vertices > 0 && sys.rows() >= coarse_min_vertices)
+        work_.coarse = std::make_unique<CoarseCorrection>(sys, space);
 }
 
 ConstrainedSolver::~ConstrainedSolver() = default;
@@ -30,7 +32,9 @@ LinearSolveStats ConstrainedSolver::solve(double mw, double sw, const FrameCoeff
 
 std::string ConstrainedSolver::name() const {
     switch (kind_) {
-        case SparseSolver::ConjugateGradient: return "projected CG (Jacobi), 9 channels on one scalar CSR";
+        case SparseSolver::ConjugateGradient:
+            return work_.coarse ? "projected CG (Jacobi + coarse correction), 9 channels on one scalar CSR"
+                                : "projected CG (Jacobi), 9 channels on one scalar CSR";
         case SparseSolver::SimplicialLDLT: return "Eigen SimplicialLDLT on the reduced system";
         case SparseSolver::Cholmod: return "CHOLMOD supernodal LLT on the reduced system";
     }

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "framefix/frame_field/coarse_correction.h"
 #include "framefix/frame_field/constrained_space.h"
 
 namespace framefix {
@@ -20,7 +21,10 @@ struct LinearSolveStats {
 
 class ConstrainedSolver {
 public:
-    ConstrainedSolver(const P1System& sys, const ConstrainedSpace& space, SparseSolver kind, int threads);
+    // coarse_min_vertices: CG adds the coarse correction (coarse_correction.h) from this many
+    // vertices on (0: never).
+    ConstrainedSolver(const P1System& sys, const ConstrainedSpace& space, SparseSolver kind, int threads,
+                      int coarse_min_vertices = 0);
     ~ConstrainedSolver();
     ConstrainedSolver(const ConstrainedSolver&) = delete;
     ConstrainedSolver& operator=(const ConstrainedSolver&) = delete;
@@ -34,6 +38,8 @@ public:
     struct CgWork {  // CG vectors kept across solves (at 1M tets each is 12 MB: re-allocating
         FrameCoefficients r, p, Ap;  // them per solve cost 10 % in page faults)
         Eigen::VectorXd inv_diag;
+        std::unique_ptr<CoarseCorrection> coarse;  // null: Jacobi alone
+        FrameCoefficients y;                       // #aggregates x 9, the coarse part of z
     };
 
 private:

@@ -96,7 +96,7 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
         sys = permute(sys, order);
         space = permute(space, order);
     }
-    ConstrainedSolver solver(sys, space, o.solver, threads);
+    ConstrainedSolver solver(sys, space, o.solver, threads, o.coarse_min_vertices);
     const int nv = mesh.num_vertices();
 
     FrameField out;
@@ -162,8 +162,11 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
             project_field(space, f, rot, true, threads, &only);
         },
         threads);
+    const auto tau_at = [&](int k) { return std::max(tau0 / std::pow(double(k), o.tau_power), tau_floor); };
+    out.floor_iteration = 1;
+    while (tau_at(out.floor_iteration) > tau_floor) ++out.floor_iteration;
     for (int k = 1; k <= o.max_iterations; ++k) {
-        const double tau = std::max(tau0 / std::pow(double(k), o.tau_power), tau_floor);
+        const double tau = tau_at(k);
         diffuse(q, tau, next);
         project_field(space, next, R, true, threads);
         const double change = mass_norm_diff(sys, next, q, threads) /
