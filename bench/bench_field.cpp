@@ -1,5 +1,5 @@
 // bench_field MESH.msh [threads] [cg|ldlt|cholmod] [max_iterations]   (env FF_REORDER=0: input numbering,
-// FF_EXTRAPOLATE=1: extrapolation at the MBO floor, FF_COARSE_MIN_VERTICES=N: coarse correction from N vertices)
+// FF_EXTRAPOLATE=1: extrapolation at the MBO floor, FF_LARGE_MESH_VERTICES=N: large-mesh settings from N vertices)
 // Reads a gmsh/Medit tet mesh, finds its crease features, solves the frame field, prints one
 // line of figures. Peer reference (Ray et al. initialisation alone, 2 cores, HexMe notch):
 // 59k tets 0.79 s, 233k tets 4.4 s, 1.07M tets 40 s.
@@ -45,10 +45,13 @@ int main(int argc, char** argv) {
         const std::string solver = argc > 3 ? argv[3] : "cg";
         o.solver = solver == "ldlt" ? SparseSolver::SimplicialLDLT
                    : solver == "cholmod" ? SparseSolver::Cholmod : SparseSolver::ConjugateGradient;
-        if (argc > 4) o.max_iterations = std::atoi(argv[4]);
+        if (argc > 4) {  // an explicit cap is a hard cap
+            o.max_iterations = std::atoi(argv[4]);
+            o.floor_iterations = 0;
+        }
         if (const char* r = std::getenv("FF_REORDER")) o.reorder = std::atoi(r) != 0;
         if (const char* e = std::getenv("FF_EXTRAPOLATE")) o.extrapolate = std::atoi(e) != 0;
-        if (const char* c = std::getenv("FF_COARSE_MIN_VERTICES")) o.coarse_min_vertices = std::atoi(c);
+        if (const char* c = std::getenv("FF_LARGE_MESH_VERTICES")) o.large_mesh_vertices = std::atoi(c);
         const double cpu0 = cpu_seconds();
         const FrameField f = solve_frame_field(cf.mesh, topo, cons, o);
         const double cpu_solve = cpu_seconds() - cpu0;
@@ -64,9 +67,10 @@ int main(int argc, char** argv) {
         std::printf("init %.3f s  smoothing %.3f s  total(init+smoothing) %.3f s\n", f.seconds_init, f.seconds_smooth,
                     f.seconds_init + f.seconds_smooth);
         std::printf("cpu(init+smoothing, all threads) %.3f s\n", cpu_solve);
-        std::printf("iterations %d (tau at its floor from %d) converged %d extrapolations %d linear_iterations %d\n"
-                    "per solve:",
-                    f.iterations, f.floor_iteration, int(f.converged), f.extrapolations, f.linear_iterations);
+        std::printf("iterations %d (tau at its floor from %d, cap %d) converged %d extrapolations %d "
+                    "linear_iterations %d\nper solve:",
+                    f.iterations, f.floor_iteration, f.iteration_cap, int(f.converged), f.extrapolations,
+                    f.linear_iterations);
         for (int it : f.solve_iterations) std::printf(" %d", it);
         std::printf("\nchange per MBO iteration:");
         for (double c : f.change_history) std::printf(" %.2g", c);

@@ -1,3 +1,5 @@
+#include <optional>
+
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -49,23 +51,27 @@ void bind_field(py::module_& m) {
         .def_readonly("change_history", &FrameField::change_history, "|q_k - q_k-1|_M / |q_k|_M per MBO iteration")
         .def_readonly("iterations", &FrameField::iterations)
         .def_readonly("floor_iteration", &FrameField::floor_iteration)
+        .def_readonly("iteration_cap", &FrameField::iteration_cap)
         .def_readonly("converged", &FrameField::converged)
         .def_readonly("extrapolations", &FrameField::extrapolations)
         .def_readonly("solver", &FrameField::solver);
 
     m.def(
         "solve_frame_field",
-        [](const TetMesh& mesh, const std::vector<EdgeFeature>& features, int max_iterations, int threads,
-           bool extrapolate) {
+        [](const TetMesh& mesh, const std::vector<EdgeFeature>& features, std::optional<int> max_iterations,
+           int threads, bool extrapolate) {
             const TetTopology topo = build_topology(mesh);
             const Constraints c = boundary_constraints(mesh, feature_set(features));
             FieldOptions o;
-            o.max_iterations = max_iterations;
+            if (max_iterations) {  // an explicit cap is a hard cap, also on large meshes
+                o.max_iterations = *max_iterations;
+                o.floor_iterations = 0;
+            }
             o.threads = threads;
             o.extrapolate = extrapolate;
             return solve_frame_field(mesh, topo, c, o);
         },
-        py::arg("mesh"), py::arg("features"), py::arg("max_iterations") = 60, py::arg("threads") = 0,
+        py::arg("mesh"), py::arg("features"), py::arg("max_iterations") = py::none(), py::arg("threads") = 0,
         py::arg("extrapolate") = false,
         py::call_guard<py::gil_scoped_release>(), "Boundary-aligned smooth frame field (linear init + MBO)");
 

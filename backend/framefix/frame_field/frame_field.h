@@ -50,9 +50,12 @@ struct FieldOptions {
     double tau_power = 3;        // tau_k = max(tau_0 / k^tau_power, h_mean^2)
     double cg_tolerance = 1e-6;  // relative residual of each MBO diffusion solve (init: x 1e-2)
     bool reorder = true;         // solve on a reverse Cuthill-McKee vertex numbering (cache locality)
-    // Projected CG adds a two-level coarse correction from this many vertices on (0: never;
-    // docs/algorithms.md#coarse-correction).
-    int coarse_min_vertices = 100000;
+    // Large meshes, from this many vertices on (0: never; docs/algorithms.md#large-meshes):
+    // projected CG adds a two-level coarse correction, and the MBO cap is raised to leave at
+    // least floor_iterations iterations at the tau floor, which a finer mesh reaches later
+    // (k_floor ~ (tau_0 / h^2)^(1/3): about 17 at the default size, 32 at 1M tets).
+    int large_mesh_vertices = 100000;
+    int floor_iterations = 43;   // what the cap of 60 leaves at the default size
     bool extrapolate = false;    // at the tau floor, jump along a drifting slow mode (Aitken; evaluated, off)
 };
 
@@ -71,6 +74,7 @@ struct FrameField {
     std::vector<double> change_history;  // one entry per MBO iteration: |q_k - q_k-1|_M / |q_k|_M
     int iterations = 0;              // MBO iterations run
     int floor_iteration = 0;         // first MBO iteration with tau at its floor h_mean^2
+    int iteration_cap = 0;           // MBO iterations allowed: max_iterations, raised on large meshes
     int linear_iterations = 0;       // CG iterations summed over all solves (direct: number of solves)
     std::vector<int> solve_iterations;  // per solve: linear init, then one per diffusion
     bool converged = false;          // stopped on the change test (not on max_iterations)

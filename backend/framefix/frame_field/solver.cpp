@@ -96,7 +96,7 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
         sys = permute(sys, order);
         space = permute(space, order);
     }
-    ConstrainedSolver solver(sys, space, o.solver, threads, o.coarse_min_vertices);
+    ConstrainedSolver solver(sys, space, o.solver, threads, o.large_mesh_vertices);
     const int nv = mesh.num_vertices();
 
     FrameField out;
@@ -165,7 +165,10 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
     const auto tau_at = [&](int k) { return std::max(tau0 / std::pow(double(k), o.tau_power), tau_floor); };
     out.floor_iteration = 1;
     while (tau_at(out.floor_iteration) > tau_floor) ++out.floor_iteration;
-    for (int k = 1; k <= o.max_iterations; ++k) {
+    const bool large = o.large_mesh_vertices > 0 && nv >= o.large_mesh_vertices;
+    out.iteration_cap = large ? std::max(o.max_iterations, out.floor_iteration - 1 + o.floor_iterations)
+                              : o.max_iterations;
+    for (int k = 1; k <= out.iteration_cap; ++k) {
         const double tau = tau_at(k);
         diffuse(q, tau, next);
         project_field(space, next, R, true, threads);
@@ -177,7 +180,7 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
         out.iterations = k;
         out.change_history.push_back(change);
         out.energy_history.push_back(dirichlet_energy(sys, q, threads));
-        report(o.progress, "field", 0.1 + 0.85 * double(k) / o.max_iterations);
+        report(o.progress, "field", 0.1 + 0.85 * double(k) / out.iteration_cap);
         if (done) {
             out.converged = true;
             break;

@@ -278,7 +278,7 @@ std::string report_json(const RunResult& r) {
         const FrameField& f = r.field->frames;
         j["field"] = {{"energy", f.energy}, {"initial_energy", f.initial_energy}, {"iterations", f.iterations},
                       {"solver", f.solver}, {"converged", f.converged},
-                      {"floor_iteration", f.floor_iteration},
+                      {"floor_iteration", f.floor_iteration}, {"iteration_cap", f.iteration_cap},
                       {"extrapolations", f.extrapolations}};
     }
     if (r.singularities) j["singularities"] = singularities_json(*r.singularities);

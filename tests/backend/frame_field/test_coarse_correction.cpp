@@ -78,9 +78,9 @@ TEST(CoarseCorrection, SolvesTheSameSystemInFewerIterations) {
 TEST(CoarseCorrection, FieldIsDeterministicAndAgreesWithJacobi) {
     const System s(12);
     FieldOptions o;
-    o.coarse_min_vertices = 0;
+    o.large_mesh_vertices = 0;
     const FrameField plain = solve_frame_field(s.fx.mesh, s.topo, s.cons, o);
-    o.coarse_min_vertices = 1;
+    o.large_mesh_vertices = 1;
     o.threads = 2;
     const FrameField a = solve_frame_field(s.fx.mesh, s.topo, s.cons, o);
     o.threads = 1;

@@ -162,6 +162,26 @@ TEST(Solver, ExtrapolationKeepsTheSolveDeterministicAndConstrained) {
     EXPECT_EQ(solve_frame_field(fx.mesh, topo, c).extrapolations, 0);  // off by default
 }
 
+// A fine mesh reaches the tau floor later; from large_mesh_vertices on, the cap leaves the floor
+// floor_iterations iterations (docs/algorithms.md#large-meshes); below, max_iterations holds.
+TEST(Solver, LargeMeshesLeaveTheFloorItsIterations) {
+    const testing::Fixture fx = twisted_cube();
+    const TetTopology topo = build_topology(fx.mesh);
+    const Constraints c = twisted_constraints(fx.mesh);
+    FieldOptions o;
+    o.tolerance = 0;  // never converges: the cap decides
+    o.floor_iterations = 70;
+    const FrameField small = solve_frame_field(fx.mesh, topo, c, o);
+    EXPECT_EQ(small.iteration_cap, 60);
+    EXPECT_EQ(small.iterations, 60);
+    o.large_mesh_vertices = 1;
+    const FrameField large = solve_frame_field(fx.mesh, topo, c, o);
+    EXPECT_GT(large.floor_iteration, 1);
+    EXPECT_EQ(large.floor_iteration, small.floor_iteration);
+    EXPECT_EQ(large.iteration_cap, large.floor_iteration - 1 + 70);
+    EXPECT_EQ(large.iterations, large.iteration_cap);
+}
+
 TEST(Solver, DirectSolversAgreeWithCg) {
     const testing::Fixture fx = twisted_cube();
     const TetTopology topo = build_topology(fx.mesh);
