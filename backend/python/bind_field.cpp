@@ -59,7 +59,7 @@ void bind_field(py::module_& m) {
     m.def(
         "solve_frame_field",
         [](const TetMesh& mesh, const std::vector<EdgeFeature>& features, std::optional<int> max_iterations,
-           int threads, bool extrapolate) {
+           int threads, bool extrapolate, int large_mesh_vertices) {
             const TetTopology topo = build_topology(mesh);
             const Constraints c = boundary_constraints(mesh, feature_set(features));
             FieldOptions o;
@@ -69,10 +69,11 @@ void bind_field(py::module_& m) {
             }
             o.threads = threads;
             o.extrapolate = extrapolate;
+            o.large_mesh_vertices = large_mesh_vertices;
             return solve_frame_field(mesh, topo, c, o);
         },
         py::arg("mesh"), py::arg("features"), py::arg("max_iterations") = py::none(), py::arg("threads") = 0,
-        py::arg("extrapolate") = false,
+        py::arg("extrapolate") = false, py::arg("large_mesh_vertices") = FieldOptions().large_mesh_vertices,
         py::call_guard<py::gil_scoped_release>(), "Boundary-aligned smooth frame field (linear init + MBO)");
 
     py::class_<SingularCurve>(m, "SingularCurve")

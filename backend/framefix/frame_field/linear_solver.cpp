@@ -33,7 +33,9 @@ LinearSolveStats ConstrainedSolver::solve(double mw, double sw, const FrameCoeff
 std::string ConstrainedSolver::name() const {
     switch (kind_) {
         case SparseSolver::ConjugateGradient:
-            return work_.coarse ? "projected CG (Jacobi + coarse correction), 9 channels on one scalar CSR"
+            return work_.coarse ? "projected CG (Jacobi + coarse correction on " +
+                                      std::to_string(work_.coarse->aggregates()) +
+                                      " aggregates), 9 channels on one scalar CSR"
                                 : "projected CG (Jacobi), 9 channels on one scalar CSR";
         case SparseSolver::SimplicialLDLT: return "Eigen SimplicialLDLT on the reduced system";
         case SparseSolver::Cholmod: return "CHOLMOD supernodal LLT on the reduced system";
