@@ -19,6 +19,9 @@ def test_cube_has_no_singular_curve(analyze):
     assert summary(r)["meshable"]
     # The constant field is MBO's fixed point: the change test stops it before the cap.
     assert r["field"]["converged"] is True and r["field"]["iterations"] < 60
+    # A default-size mesh is far below the large-mesh settings: Jacobi CG and the cap of 60.
+    assert r["field"]["iteration_cap"] == 60 and 1 < r["field"]["floor_iteration"] < 60
+    assert "coarse" not in r["field"]["solver"]
 
 
 def test_l_prism_has_no_singular_curve(analyze):

@@ -74,3 +74,17 @@ def test_field_extrapolation_is_an_option_that_keeps_the_notch_graph():
     for field in (plain, jumped):
         s = framefix.extract_singularities(a.mesh, field, threads=1).summary
         assert (s["curves"], s["curves_3_5"], s["meshable"]) == (1, 1, False)
+
+
+def test_large_mesh_settings_keep_the_notch_graph_and_an_explicit_cap_is_hard():
+    """The large-mesh settings (coarse correction, raised MBO cap) forced on a default-size mesh:
+    the same graph, a converged field; max_iterations given is a hard cap even then."""
+    a = framefix.mesh_part(str(SAMPLES / "notch.step"), threads=1)
+    plain = framefix.solve_frame_field(a.mesh, a.features, threads=1)
+    large = framefix.solve_frame_field(a.mesh, a.features, threads=1, large_mesh_vertices=1)
+    assert "coarse" in large.solver and "coarse" not in plain.solver
+    assert plain.iteration_cap == 60 and large.iteration_cap >= 60 and large.converged
+    s = framefix.extract_singularities(a.mesh, large, threads=1).summary
+    assert (s["curves"], s["curves_3_5"], s["meshable"]) == (1, 1, False)
+    capped = framefix.solve_frame_field(a.mesh, a.features, max_iterations=5, threads=1, large_mesh_vertices=1)
+    assert capped.iteration_cap == 5 and capped.iterations == 5

@@ -55,7 +55,7 @@ struct FieldOptions {
     // least floor_iterations iterations at the tau floor, which a finer mesh reaches later
     // (k_floor ~ (tau_0 / h^2)^(1/3): about 17 at the default size, 32 at 1M tets).
     int large_mesh_vertices = 100000;
-    int floor_iterations = 43;   // what the cap of 60 leaves at the default size
+    int floor_iterations = 43;   // what the cap of 60 leaves at the default size (0: max_iterations is a hard cap)
     bool extrapolate = false;    // at the tau floor, jump along a drifting slow mode (Aitken; evaluated, off)
 };
 

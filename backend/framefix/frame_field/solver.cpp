@@ -166,8 +166,9 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
     out.floor_iteration = 1;
     while (tau_at(out.floor_iteration) > tau_floor) ++out.floor_iteration;
     const bool large = o.large_mesh_vertices > 0 && nv >= o.large_mesh_vertices;
-    out.iteration_cap = large ? std::max(o.max_iterations, out.floor_iteration - 1 + o.floor_iterations)
-                              : o.max_iterations;
+    out.iteration_cap = large && o.floor_iterations > 0
+                            ? std::max(o.max_iterations, out.floor_iteration - 1 + o.floor_iterations)
+                            : o.max_iterations;
     for (int k = 1; k <= out.iteration_cap; ++k) {
         const double tau = tau_at(k);
         diffuse(q, tau, next);
