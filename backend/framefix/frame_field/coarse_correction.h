@@ -1,5 +1,5 @@
 #pragma once
-// Two-level additive preconditioner for projected CG (docs/algorithms.md#coarse-correction):
+// Two-level additive preconditioner for projected CG (docs/algorithms.md#large-meshes):
 //   z = D^-1 r + R^T A_c^-1 R r,   A_c = R (mass_weight M + stiff_weight K) R^T,
 // R the 0/1 restriction onto aggregates of free vertices (two rounds of neighbour aggregation).
 // R reads and R^T writes free vertices only, where the projector Pi is the identity, so the

@@ -17,8 +17,10 @@ ConstrainedSolver::ConstrainedSolver(const P1System& sys, const ConstrainedSpace
     FF_ASSERT(sys.rows() == space.vertices());
     if (kind != SparseSolver::ConjugateGradient)
         direct_ = std::unique_ptr<Direct, void (*)(Direct*)>(make_direct(sys, space, kind), destroy_direct);
-    else if (coarse_min_vertices > 0 && sys.rows() >= coarse_min_vertices)
+    else if (coarse_min_vertices > 0 && sys.rows() >= coarse_min_vertices) {
         work_.coarse = std::make_unique<CoarseCorrection>(sys, space);
+        if (work_.coarse->aggregates() == 0) work_.coarse.reset();  // every vertex constrained
+    }
 }
 
 ConstrainedSolver::~ConstrainedSolver() = default;

@@ -18,6 +18,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kRetryDistance = 0.3;  // |q/|q| - proj|: beyond it a warm projection is re-checked
+constexpr int kFloorSearch = 100000;    // iterations searched for the first one at the tau floor
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Per-vertex projection onto the frames allowed by the vertex's constraint. Free vertices:
@@ -163,8 +164,8 @@ FrameField solve_frame_field(const TetMesh& mesh, const TetTopology& topo, const
         },
         threads);
     const auto tau_at = [&](int k) { return std::max(tau0 / std::pow(double(k), o.tau_power), tau_floor); };
-    out.floor_iteration = 1;
-    while (tau_at(out.floor_iteration) > tau_floor) ++out.floor_iteration;
+    out.floor_iteration = 1;  // bounded: a tau_power <= 0 never reaches the floor
+    while (out.floor_iteration < kFloorSearch && tau_at(out.floor_iteration) > tau_floor) ++out.floor_iteration;
     const bool large = o.large_mesh_vertices > 0 && nv >= o.large_mesh_vertices;
     out.iteration_cap = large && o.floor_iterations > 0
                             ? std::max(o.max_iterations, out.floor_iteration - 1 + o.floor_iterations)
