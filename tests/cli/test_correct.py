@@ -21,6 +21,11 @@ def test_snapping_removes_three_five_curves(analyze, name):
     assert c["after"]["meshable"]
     assert r["singularities"]["summary"] == c["after"]
     assert c["rotated_fraction_10deg"] <= LOCALITY_BOUND[name]
+    # The first field's MBO figures stay in the report next to the corrected field's: its
+    # energy is another one (snapping changes the constraints), its cap the same.
+    before = c["field_before"]
+    assert before["iterations"] >= 1 and before["iteration_cap"] == r["field"]["iteration_cap"]
+    assert before["energy"] != r["field"]["energy"]
 
 
 def test_part_without_three_five_curve_is_unchanged(analyze):

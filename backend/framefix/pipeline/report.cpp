@@ -115,6 +115,13 @@ json search_json(const Correction& c) {
     return j;
 }
 
+// MBO's figures of one field: the report's `field`, and `correction.field_before`.
+json field_json(const FrameField& f) {
+    return {{"energy", f.energy}, {"initial_energy", f.initial_energy}, {"iterations", f.iterations},
+            {"solver", f.solver}, {"converged", f.converged}, {"floor_iteration", f.floor_iteration},
+            {"iteration_cap", f.iteration_cap}, {"extrapolations", f.extrapolations}};
+}
+
 json correction_json(const Correction& c, const SingularitySummary& after) {
     json paths = json::array();
     for (const auto& p : c.snap.paths) {
@@ -139,6 +146,7 @@ json correction_json(const Correction& c, const SingularitySummary& after) {
             {"fine_fillet_faces", c.fine_fillet_faces},
             {"remesh_seconds", c.remesh_seconds},
             {"before", summary_json(c.before)},
+            {"field_before", field_json(c.field_before)},
             {"after", summary_json(after)},
             {"changed_curves", c.snap.snapped_curve_ids.size()},
             {"three_five_curves_snapped", c.snap.three_five_curves},
@@ -275,11 +283,7 @@ std::string report_json(const RunResult& r) {
         add_features(j, *r.mesh);
     }
     if (r.field) {
-        const FrameField& f = r.field->frames;
-        j["field"] = {{"energy", f.energy}, {"initial_energy", f.initial_energy}, {"iterations", f.iterations},
-                      {"solver", f.solver}, {"converged", f.converged},
-                      {"floor_iteration", f.floor_iteration}, {"iteration_cap", f.iteration_cap},
-                      {"extrapolations", f.extrapolations}};
+        j["field"] = field_json(r.field->frames);
     }
     if (r.singularities) j["singularities"] = singularities_json(*r.singularities);
     if (r.correction) j["correction"] = correction_json(*r.correction, r.singularities->summary);
