@@ -69,7 +69,6 @@ TEST(Solver, RotatedCubeGivesTheRotatedFrame) {
     }
 }
 
-
 TEST(Solver, ConstraintsHoldExactlyAfterTheSolve) {
     const testing::Fixture fx = twisted_cube();
     const TetTopology topo = build_topology(fx.mesh);
