@@ -134,7 +134,15 @@ void bind_blocks(py::module_& m) {
         .def_readonly("curtain_corners", &BlockDecomposition::curtain_corners,
                       "corner lines below those paths' feet that emit sheets instead")
         .def_readonly("ring_cuts", &BlockDecomposition::ring_cuts,
-                      "meridian sheets across rings (blocks that were solid tori, as a tube)");
+                      "meridian sheets across rings (blocks that were solid tori, as a tube)")
+        .def_property_readonly("junction_tries", [](const BlockDecomposition& b) {
+            py::list out;
+            for (const auto& t : b.junction_tries)
+                out.append(py::dict(py::arg("mode") = t.mode, py::arg("count") = t.count, py::arg("valid") = t.valid, py::arg("pairs") = t.pairs,
+                                    py::arg("conforming_pairs") = t.conforming_pairs));
+            return out;
+        }, "sheet modes tried at interior nodes where 3+ curves meet, with their blocks (empty: no such node)")
+        .def_readonly("junction_mode", &BlockDecomposition::junction_mode, "the mode whose blocks were kept");
 }
 
 void bind_hexmesh(py::module_& m) {

@@ -45,6 +45,28 @@ def test_notch_after_snapping_gives_seven_valid_conforming_blocks(tmp_path):
     assert progress_stages(err) == ["load", "mesh", "field", "singularities", "correct", "blocks"]
     assert err.splitlines()[-1] == "progress blocks 1.000"
     assert "7 blocks, all valid, 9/9 pairs conforming" in out
+    assert (b["junction_tries"], b["junction_mode"]) == ([], "")  # no interior node where curves meet
+
+
+@pytest.mark.parametrize("threads", ["1", "2"])
+def test_filleted_notch_gives_the_papers_seven_blocks_through_its_junction_node(tmp_path, threads):
+    # The paper's Fig. 1b / 6a: filleting the notch's floor arc leaves one interior node where the
+    # fillet's two valence-5 halves, a vertical valence-5 curve and a valence-3 stub meet. Carried
+    # past the node, each half's curtain lands beside the other's, and a wedge cuts a fifth face
+    # into the corner blocks; the modes that do not continue them give 7 hexahedra, as the paper.
+    code, out, err = run("blocks", SAMPLES / "notch_filleted.step", "--threads", threads, "--out", tmp_path)
+    assert code == 0, err
+    r = json.loads((tmp_path / "report.json").read_text())
+    nodes = [n for n in r["singularities"]["nodes"] if not n["boundary"]]
+    assert [(n["n3"], n["n5"], n["valid"]) for n in nodes] == [(1, 3, True)]
+    b = r["blocks"]
+    assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (7, 7, 9, 9)
+    tries = {t["mode"]: t for t in b["junction_tries"]}
+    assert list(tries) == ["continue", "drop", "drop+close"]
+    kept = tries[b["junction_mode"]]
+    assert (kept["count"], kept["valid"], kept["conforming_pairs"], kept["pairs"]) == (7, 7, 9, 9)
+    assert b["junction_mode"] != "continue"
+    assert not b["thin_refinement"]["tried"]  # every block valid: no finer mesh
 
 
 def test_blocks_without_correction_has_no_correction_section(tmp_path):

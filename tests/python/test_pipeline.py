@@ -99,6 +99,19 @@ def test_blocks_of_the_half_sphere_box_report_its_convex_paths():
     assert r.blocks.curtain_corners == 4
     assert (r.blocks.count, r.blocks.valid) == (10, 10)
     assert framefix.report(r)["blocks"]["convex_paths"] == list(r.blocks.convex_paths)
+    assert (r.blocks.junction_tries, r.blocks.junction_mode) == ([], "")  # snapped: no interior node
+
+
+def test_blocks_at_a_junction_node_list_each_mode_tried_and_keep_the_best():
+    """notch_filleted's interior node (1 valence-3 and 3 valence-5 curves): the three ways of
+    carrying sheets past it are tried, and the kept one has the most valid blocks."""
+    r = framefix.build_blocks(str(SAMPLES / "notch_filleted.step"), method="none")
+    tries = r.blocks.junction_tries
+    assert [t["mode"] for t in tries] == ["continue", "drop", "drop+close"]
+    kept = next(t for t in tries if t["mode"] == r.blocks.junction_mode)
+    assert (kept["count"], kept["valid"]) == (r.blocks.count, r.blocks.valid)
+    assert kept["valid"] == max(t["valid"] for t in tries)
+    assert framefix.report(r)["blocks"]["junction_tries"] == tries
 
 
 def test_blocks_of_the_tube_are_its_ring_cut_in_four_and_thin_refinement_can_be_turned_off():

@@ -48,6 +48,15 @@ struct BlockOptions {
     double conform_tolerance = 2.5;  // corner positions of a shared face must match within this, in h
     // Corner lines of concave-curve curtains emit sheets (docs/algorithms.md#curtain-corners).
     bool curtain_corners = true;
+    // Sheets at interior nodes where three or more singular curves meet
+    // (docs/algorithms.md#junction-nodes). Continue: cross-extend every sheet past the node.
+    // Drop: not the continuations that another curve's sheet at the node already is.
+    // DropAndClose: those dropped, and every sheet carried to the node and 0.5 h past it.
+    enum class Junctions { Continue, Drop, DropAndClose };
+    Junctions junctions = Junctions::Continue;
+    // Also partition with the other two Junctions modes where the graph has such a node, and keep
+    // the best blocks (build_blocks' score).
+    bool try_junctions = true;
     double flat_deg = 35;          // a block edge whose two face normals are closer than this is flat
     int threads = 0;               // OpenMP threads, 0 = all
 };
@@ -141,6 +150,14 @@ struct BlockDecomposition {
     int curtain_corners = 0;
     // Meridian sheets across rings (blocks that were solid tori: a tube), docs/algorithms.md#ring-cuts.
     int ring_cuts = 0;
+    // Junction nodes (docs/algorithms.md#junction-nodes): each mode tried, in order, with its
+    // blocks, and the one kept; empty when the graph has no such node.
+    struct JunctionTry {
+        std::string mode;          // "continue", "drop", "drop+close"
+        int count = 0, valid = 0, pairs = 0, conforming_pairs = 0;
+    };
+    std::vector<JunctionTry> junction_tries;
+    std::string junction_mode;
     double h = 0;                  // mean mesh edge length used as the unit of the options
     double seconds = 0;            // total wall clock
     double seconds_sheets = 0, seconds_partition = 0, seconds_validation = 0;

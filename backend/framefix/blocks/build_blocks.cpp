@@ -227,6 +227,61 @@ std::tuple<bool, int, int> score(const BlockDecomposition& b) {
     return {b.valid == b.count && b.conforming_pairs == b.pairs, 2 * b.valid - b.count, 2 * b.conforming_pairs - b.pairs};
 }
 
+bool has_junction(const std::vector<SheetSource>& sources) {
+    for (const SheetSource& s : sources)
+        if (s.junction[0] >= 0 || s.junction[1] >= 0) return true;
+    return false;
+}
+
+// The configured mode first; with try_junctions and a junction node in the graph, the other two.
+std::vector<BlockOptions::Junctions> junction_modes(const std::vector<SheetSource>& sources, const BlockOptions& o) {
+    using J = BlockOptions::Junctions;
+    std::vector<J> modes{o.junctions};
+    if (o.try_junctions && has_junction(sources))
+        for (J m : {J::Continue, J::Drop, J::DropAndClose})
+            if (m != o.junctions) modes.push_back(m);
+    return modes;
+}
+
+const char* junction_name(BlockOptions::Junctions m) {
+    switch (m) {
+        case BlockOptions::Junctions::Continue: return "continue";
+        case BlockOptions::Junctions::Drop: return "drop";
+        case BlockOptions::Junctions::DropAndClose: return "drop+close";
+    }
+    return "";
+}
+
+// Sheets, partition and validation once per junction mode (junction_modes); `out` (holding what
+// the tries share) becomes the best try by score, with every try listed when the graph has a
+// junction node.
+Validated best_junction_mode(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
+                             const TetLocator& locator, const std::vector<SheetSource>& sources, const Points& singular,
+                             const std::vector<int>& group, double h, const BlockOptions& options,
+                             BlockDecomposition& out) {
+    Validated v;
+    const BlockDecomposition common = out;
+    const std::vector<BlockOptions::Junctions> modes = junction_modes(sources, options);
+    double sheet_seconds = 0;
+    std::vector<BlockDecomposition::JunctionTry> tries;
+    for (size_t i = 0; i < modes.size(); ++i) {
+        BlockOptions o = options;
+        o.junctions = modes[i];
+        BlockDecomposition tried = common;
+        const auto t1 = Clock::now();
+        tried.sheets = build_sheets(mesh, field, locator, sources, singular, h, o, tried.stats);
+        sheet_seconds += since(t1);
+        Validated w = partition_and_validate(mesh, topo, singular, group, h, o, tried);
+        count_conformity(w, h, o, tried);
+        tries.push_back({junction_name(modes[i]), tried.count, tried.valid, tried.pairs, tried.conforming_pairs});
+        if (i == 0 || score(tried) > score(out)) out = std::move(tried), v = std::move(w), out.junction_mode = junction_name(modes[i]);
+    }
+    if (has_junction(sources)) out.junction_tries = std::move(tries);
+    else out.junction_mode.clear();
+    out.seconds_sheets = sheet_seconds;
+    return v;
+}
+
 }  // namespace
 
 BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
@@ -256,13 +311,13 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     sources.insert(sources.end(), feature.begin(), feature.end());
     const Points singular = singular_points(graph);
     if (options.curtain_corners) add_curtain_corners(mesh, field, locator, curves, paths, convex, singular, h, options, sources, out);
-    out.sheets = build_sheets(mesh, field, locator, sources, singular, h, options, out.stats);
-    out.seconds_sheets = since(t0);
-
-    // Partition and validation; lenses join a neighbour and the blocks are validated again.
     const std::vector<int> group = surface_groups(mesh, topo, features, out.ignored_imprints, paths);
-    Validated v = partition_and_validate(mesh, topo, singular, group, h, options, out);
-    count_conformity(v, h, options, out);
+
+    // Sheets, partition and validation (lenses join a neighbour and the blocks are validated
+    // again), once per junction mode tried; the best blocks are kept.
+    const double source_seconds = since(t0);
+    Validated v = best_junction_mode(mesh, topo, field, locator, sources, singular, group, h, options, out);
+    out.seconds_sheets += source_seconds;
     // Rings (a tube): no sheet above cuts them across; meridian sheets do, then all again, kept
     // only when the blocks are better (on HexMe's n10o at 0.7 x they were not).
     TraceOptions trace;

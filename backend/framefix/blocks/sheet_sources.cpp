@@ -139,6 +139,10 @@ std::vector<char> convex_paths(const TetMesh& mesh, const FeatureSet& features, 
 std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
                                           const TetLocator& locator, double h, const BlockOptions& options) {
     std::vector<SheetSource> out;
+    std::vector<int> degree(graph.nodes.size(), 0);  // curves ending at each node
+    for (const SingularCurve& c : graph.curves)
+        for (int e = 0; e < 2 && !c.closed; ++e)
+            if (c.ends[e] >= 0 && c.ends[e] < int(degree.size())) ++degree[c.ends[e]];
     for (const SingularCurve& c : graph.curves) {
         if (c.kind == CurveKind::Other || c.faces.size() < 3 || c.points.rows() < 2) continue;
         const Points& P = c.points;
@@ -165,6 +169,10 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
         for (int e = 0; e < 2; ++e)
             src.boundary_end[e] = !c.closed && c.ends[e] >= 0 && c.ends[e] < int(graph.nodes.size()) &&
                                   graph.nodes[c.ends[e]].boundary;
+        for (int e = 0; e < 2; ++e)
+            if (!c.closed && c.ends[e] >= 0 && c.ends[e] < int(graph.nodes.size()) &&
+                !graph.nodes[c.ends[e]].boundary && degree[c.ends[e]] >= 3)
+                src.junction[e] = c.ends[e];
         out.push_back(std::move(src));
     }
     return out;

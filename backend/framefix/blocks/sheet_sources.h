@@ -24,6 +24,9 @@ struct SheetSource {
     std::string name;
     std::vector<SheetSeed> seeds;      // in curve order, about one per h
     bool boundary_end[2] = {false, false};  // source end lies on the boundary: extend the sheet past it
+    // Singular curves: the interior node at each end where at least three curves meet, else -1.
+    // There a sheet's continuation past the end may be another curve's sheet (sheets.cpp).
+    int junction[2] = {-1, -1};
     // A closed curve (a circle, a loop): its first and last seeds are neighbours. The sheet is
     // zipped across them and has no end to extend or continue.
     bool closed = false;

@@ -141,6 +141,42 @@ Points singular_points(const SingularityGraph& graph) {
 
 namespace {
 
+bool any_within(const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D, double cos_min) {
+    for (const auto& b : D) if (a.dot(b) >= cos_min) return true;
+    return false;
+}
+
+// The sheet spanned by `d` and `out` at end e of source si is another singular curve's sheet
+// at the same junction node, spanned by that curve's tangent t leaving the node and one of its
+// directions d': d along t and out along d', or d along d' and out along t. On the filleted notch
+// the two halves of the fillet's valence-5 curve meet at the node, and continuing either one's
+// curtain past it put a second sheet beside the other's, 1-3 h apart: a 5-faced wedge.
+bool continued_at_junction(const std::vector<SheetSource>& sources, int si, int e, const Eigen::Vector3d& d,
+                           const Eigen::Vector3d& out, double cos_match) {
+    constexpr double kAlongCos = 0.7;  // 45 deg: a curve's tangent picks which sheet it continues
+    const int node = sources[si].junction[e];
+    if (node < 0) return false;
+    if (std::abs(d.dot(out)) > kAlongCos) return true;  // d along the curve: spans no sheet past the node
+    for (int sj = 0; sj < int(sources.size()); ++sj)
+        for (int f = 0; f < 2; ++f) {
+            if ((sj == si && f == e) || sources[sj].junction[f] != node) continue;
+            const std::vector<SheetSeed>& T = sources[sj].seeds;
+            const int n = int(T.size());
+            if (n < 2) continue;
+            // The seed on the node often lacks directions: the fullest of the first three.
+            int k = f == 0 ? 0 : n - 1;
+            for (int j = 1; j < std::min(3, n); ++j) {
+                const int kj = f == 0 ? j : n - 1 - j;
+                if (T[kj].directions.size() > T[k].directions.size()) k = kj;
+            }
+            const Eigen::Vector3d t = (T[f == 0 ? std::min(2, n - 1) : std::max(n - 3, 0)].point - T[f == 0 ? 0 : n - 1].point).normalized();
+            if ((d.dot(t) > kAlongCos && any_within(out, T[k].directions, cos_match)) ||
+                (out.dot(t) > kAlongCos && any_within(d, T[k].directions, cos_match)))
+                return true;
+        }
+    return false;
+}
+
 // The state of one build_sheets call: traced streamlines, the soup under construction, and the
 // streamline pairs that later steps continue.
 class SheetTracer {
@@ -149,7 +185,7 @@ public:
                 const std::vector<SheetSource>& sources, const Points& singular, double h, const BlockOptions& o,
                 SheetSoup& soup, SheetStats& stats)
         : mesh_(mesh), field_(field), locator_(locator), sources_(sources), h_(h), stats_(stats),
-          soup_(soup, h, o.overshoot), cos_match_(std::cos(o.match_deg * M_PI / 180)) {
+          soup_(soup, h, o.overshoot), cos_match_(std::cos(o.match_deg * M_PI / 180)), junctions_(o.junctions) {
         trace_.step = o.step * h;
         trace_.stop_distance = o.stop_distance * h;
         trace_.singular_points = singular;
@@ -171,8 +207,10 @@ private:
     const Traced& line(int si, int ki, int di) const { return lines_[index_.at({si, ki, di})]; }
     bool widen(int si) const { return si >= 0 && sources_[si].kind != SheetSource::Singular; }
     bool matched(const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D) const {
-        for (const auto& b : D) if (a.dot(b) >= cos_match_) return true;
-        return false;
+        return any_within(a, D, cos_match_);
+    }
+    bool continued(int si, int e, const Eigen::Vector3d& d, const Eigen::Vector3d& out) const {
+        return junctions_ != BlockOptions::Junctions::Continue && continued_at_junction(sources_, si, e, d, out, cos_match_);
     }
 
     const TetMesh& mesh_;
@@ -183,6 +221,7 @@ private:
     SheetStats& stats_;
     SoupBuilder soup_;
     double cos_match_;
+    BlockOptions::Junctions junctions_;
     TraceOptions trace_;
     std::map<std::tuple<int, int, int>, int> index_;  // (source, seed, direction) -> lines_ index
     std::vector<Traced> lines_;
@@ -256,8 +295,8 @@ void SheetTracer::zip_seeds(int si) {
         }
 }
 
-// Past a source end on the boundary: the nearest complete seed's streamlines, translated to the
-// end point and 0.5 h beyond it.
+// Past a source end on the boundary (and, in mode DropAndClose, at a junction node): the nearest
+// complete seed's streamlines, translated to the end point and 0.5 h beyond it.
 void SheetTracer::extend_past_boundary_ends(int si) {
     const std::vector<SheetSeed>& S = sources_[si].seeds;
     if (S.size() < 2) return;
@@ -266,7 +305,8 @@ void SheetTracer::extend_past_boundary_ends(int si) {
     int full = 0, most = 0;
     for (auto [k, c] : counts) if (c > most) most = c, full = k;
     for (int e = 0; e < 2; ++e) {
-        if (!sources_[si].boundary_end[e] || full == 0) continue;
+        const bool junc = sources_[si].junction[e] >= 0 && junctions_ == BlockOptions::Junctions::DropAndClose;
+        if ((!sources_[si].boundary_end[e] && !junc) || full == 0) continue;
         int k0 = -1;
         for (int j = 0; j < int(S.size()) && k0 < 0; ++j) {
             const int k = e == 0 ? j : int(S.size()) - 1 - j;
@@ -306,8 +346,13 @@ void SheetTracer::collect_cross_jobs(int si) {
             if (!matched(S[kn].directions[dj], S[ki].directions)) jobs_.push_back({si, kn, dj, -1});
     }
     if (sources_[si].closed) return;
-    for (int di = 0; di < int(S.front().directions.size()); ++di) jobs_.push_back({si, 0, di, -1});
-    for (int di = 0; di < int(S.back().directions.size()); ++di) jobs_.push_back({si, int(S.size()) - 1, di, +1});
+    // Outward tangents over 2 seeds: a curve can bend within 1 h of its node.
+    const Eigen::Vector3d out0 = (S[0].point - S[std::min(2, n - 1)].point).normalized(),
+                          out1 = (S[n - 1].point - S[std::max(n - 3, 0)].point).normalized();
+    for (int di = 0; di < int(S.front().directions.size()); ++di)
+        if (!continued(si, 0, S.front().directions[di], out0)) jobs_.push_back({si, 0, di, -1});
+    for (int di = 0; di < int(S.back().directions.size()); ++di)
+        if (!continued(si, 1, S.back().directions[di], out1)) jobs_.push_back({si, n - 1, di, +1});
 }
 
 // From each job's streamline, trace along the source tangent (away from the sheet), zip

@@ -172,6 +172,10 @@ json blocks_json(const BlockDecomposition& b) {
     }
     for (const auto& p : b.neighbour_pairs)
         pairs.push_back({{"blocks", json::array({p.a, p.b})}, {"conforming", p.conforming}, {"reason", p.reason}});
+    json junction_tries = json::array();
+    for (const auto& t : b.junction_tries)
+        junction_tries.push_back({{"mode", t.mode}, {"count", t.count}, {"valid", t.valid}, {"pairs", t.pairs},
+                                  {"conforming_pairs", t.conforming_pairs}});
     return {{"count", b.count},
             {"valid", b.valid},
             {"conforming_pairs", b.conforming_pairs},
@@ -182,6 +186,8 @@ json blocks_json(const BlockDecomposition& b) {
             {"convex_paths", b.convex_paths},
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},
+            {"junction_tries", junction_tries},
+            {"junction_mode", b.junction_mode},
             {"blocks", blocks},
             {"neighbour_pairs", pairs},
             {"seconds", {{"sheets", b.seconds_sheets}, {"partition", b.seconds_partition},
