@@ -103,11 +103,12 @@ def test_blocks_of_the_half_sphere_box_report_its_convex_paths():
 
 
 def test_blocks_at_a_junction_node_list_each_mode_tried_and_keep_the_best():
-    """notch_filleted's interior node (1 valence-3 and 3 valence-5 curves): the three ways of
-    carrying sheets past it are tried, and the kept one has the most valid blocks."""
+    """notch_filleted's interior node (1 valence-3 and 3 valence-5 curves, the fillet's curve
+    running straight on through it): the five ways of carrying sheets past it are tried, and the
+    kept one has the most valid blocks."""
     r = framefix.build_blocks(str(SAMPLES / "notch_filleted.step"), method="none")
     tries = r.blocks.junction_tries
-    assert [t["mode"] for t in tries] == ["continue", "drop", "drop+close"]
+    assert [t["mode"] for t in tries] == ["continue", "drop", "drop+close", "drop+zip", "drop+close+zip"]
     kept = next(t for t in tries if t["mode"] == r.blocks.junction_mode)
     assert (kept["count"], kept["valid"]) == (r.blocks.count, r.blocks.valid)
     assert kept["valid"] == max(t["valid"] for t in tries)

@@ -52,10 +52,13 @@ struct BlockOptions {
     // (docs/algorithms.md#junction-nodes). Continue: cross-extend every sheet past the node.
     // Drop: not the continuations that another curve's sheet at the node already is.
     // DropAndClose: those dropped, and every sheet carried to the node and 0.5 h past it.
-    enum class Junctions { Continue, Drop, DropAndClose };
+    // ...AndZip: also, where one curve runs straight on through the node into another, their end
+    // streamlines are zipped across it, as one curve's would be.
+    enum class Junctions { Continue, Drop, DropAndClose, DropAndZip, DropCloseAndZip };
     Junctions junctions = Junctions::Continue;
-    // Also partition with the other two Junctions modes where the graph has such a node, and keep
-    // the best blocks (build_blocks' score).
+    // Also partition with the other Junctions modes where the graph has such a node (the zip
+    // modes only where a curve runs straight on through one), and keep the best blocks
+    // (build_blocks' score).
     bool try_junctions = true;
     double flat_deg = 35;          // a block edge whose two face normals are closer than this is flat
     int threads = 0;               // OpenMP threads, 0 = all
@@ -153,7 +156,7 @@ struct BlockDecomposition {
     // Junction nodes (docs/algorithms.md#junction-nodes): each mode tried, in order, with its
     // blocks, and the one kept; empty when the graph has no such node.
     struct JunctionTry {
-        std::string mode;          // "continue", "drop", "drop+close"
+        std::string mode;          // "continue", "drop", "drop+close", "drop+zip", "drop+close+zip"
         int count = 0, valid = 0, pairs = 0, conforming_pairs = 0;
     };
     std::vector<JunctionTry> junction_tries;

@@ -178,6 +178,36 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
     return out;
 }
 
+JunctionEnd junction_end(const SheetSource& source, int f) {
+    const std::vector<SheetSeed>& T = source.seeds;
+    const int n = int(T.size());
+    JunctionEnd out;
+    if (n < 2) return out;
+    out.seed = f == 0 ? 0 : n - 1;
+    for (int j = 1; j < std::min(3, n); ++j) {
+        const int kj = f == 0 ? j : n - 1 - j;
+        if (T[kj].directions.size() > T[out.seed].directions.size()) out.seed = kj;
+    }
+    out.tangent = unit_or_zero(T[f == 0 ? std::min(2, n - 1) : std::max(n - 3, 0)].point - T[f == 0 ? 0 : n - 1].point);
+    return out;
+}
+
+bool straight_through(const std::vector<SheetSource>& sources, int si, int e, int sj, int f) {
+    const int node = sources[si].junction[e];
+    if (node < 0 || sources[sj].junction[f] != node || (si == sj && e == f)) return false;
+    const JunctionEnd a = junction_end(sources[si], e), b = junction_end(sources[sj], f);
+    return a.seed >= 0 && b.seed >= 0 && -a.tangent.dot(b.tangent) > kJunctionAlongCos;
+}
+
+bool has_straight_junction(const std::vector<SheetSource>& sources) {
+    for (int si = 0; si < int(sources.size()); ++si)
+        for (int sj = si + 1; sj < int(sources.size()); ++sj)
+            for (int e = 0; e < 2; ++e)
+                for (int f = 0; f < 2; ++f)
+                    if (straight_through(sources, si, e, sj, f)) return true;
+    return false;
+}
+
 std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& features, const FrameField& field) {
     // 15 deg: an arc the field follows stays within a few degrees; one it ignores deviates by up
     // to 45 deg (a quarter arc under a constant frame: 22 deg on average).

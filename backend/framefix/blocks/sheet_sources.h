@@ -32,6 +32,27 @@ struct SheetSource {
     bool closed = false;
 };
 
+// At end f of a source ending at a junction node: the seed whose directions stand for the end
+// (the seed on the node often lacks directions, so the fullest of the three nearest it; -1 for a
+// source of fewer than 2 seeds) and the unit tangent leaving the node, read over two seeds (a
+// curve can bend within 1 h of its node).
+struct JunctionEnd {
+    int seed = -1;
+    Eigen::Vector3d tangent = Eigen::Vector3d::Zero();
+};
+JunctionEnd junction_end(const SheetSource& source, int f);
+
+// 45 deg: a curve's tangent picks which sheet at a junction node it continues.
+constexpr double kJunctionAlongCos = 0.7;
+
+// End f of source sj runs straight on from end e of source si through their common junction node
+// (the two halves of the filleted notch's valence-5 curve): tangents leaving the node opposite
+// within 45 deg.
+bool straight_through(const std::vector<SheetSource>& sources, int si, int e, int sj, int f);
+
+// Some junction node has a curve running straight on through it.
+bool has_straight_junction(const std::vector<SheetSource>& sources);
+
 // Singular curves (not kind Other, >= 3 triangles): seeds every seed_spacing h on the polyline,
 // directions = zeros of the radial deviation of the closest frame axis on a circle of radius
 // seed_radius h around the curve (valence k gives k zeros; seeds with fewer keep what they find).

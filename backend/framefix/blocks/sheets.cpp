@@ -141,6 +141,10 @@ Points singular_points(const SingularityGraph& graph) {
 
 namespace {
 
+using Junctions = BlockOptions::Junctions;
+bool closes(Junctions m) { return m == Junctions::DropAndClose || m == Junctions::DropCloseAndZip; }
+bool zips(Junctions m) { return m == Junctions::DropAndZip || m == Junctions::DropCloseAndZip; }
+
 bool any_within(const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D, double cos_min) {
     for (const auto& b : D) if (a.dot(b) >= cos_min) return true;
     return false;
@@ -153,25 +157,17 @@ bool any_within(const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D,
 // curtain past it put a second sheet beside the other's, 1-3 h apart: a 5-faced wedge.
 bool continued_at_junction(const std::vector<SheetSource>& sources, int si, int e, const Eigen::Vector3d& d,
                            const Eigen::Vector3d& out, double cos_match) {
-    constexpr double kAlongCos = 0.7;  // 45 deg: a curve's tangent picks which sheet it continues
     const int node = sources[si].junction[e];
     if (node < 0) return false;
-    if (std::abs(d.dot(out)) > kAlongCos) return true;  // d along the curve: spans no sheet past the node
+    if (std::abs(d.dot(out)) > kJunctionAlongCos) return true;  // d along the curve: spans no sheet past the node
     for (int sj = 0; sj < int(sources.size()); ++sj)
         for (int f = 0; f < 2; ++f) {
             if ((sj == si && f == e) || sources[sj].junction[f] != node) continue;
-            const std::vector<SheetSeed>& T = sources[sj].seeds;
-            const int n = int(T.size());
-            if (n < 2) continue;
-            // The seed on the node often lacks directions: the fullest of the first three.
-            int k = f == 0 ? 0 : n - 1;
-            for (int j = 1; j < std::min(3, n); ++j) {
-                const int kj = f == 0 ? j : n - 1 - j;
-                if (T[kj].directions.size() > T[k].directions.size()) k = kj;
-            }
-            const Eigen::Vector3d t = (T[f == 0 ? std::min(2, n - 1) : std::max(n - 3, 0)].point - T[f == 0 ? 0 : n - 1].point).normalized();
-            if ((d.dot(t) > kAlongCos && any_within(out, T[k].directions, cos_match)) ||
-                (out.dot(t) > kAlongCos && any_within(d, T[k].directions, cos_match)))
+            const JunctionEnd j = junction_end(sources[sj], f);
+            if (j.seed < 0) continue;
+            const std::vector<Eigen::Vector3d>& D = sources[sj].seeds[j.seed].directions;
+            if ((d.dot(j.tangent) > kJunctionAlongCos && any_within(out, D, cos_match)) ||
+                (out.dot(j.tangent) > kJunctionAlongCos && any_within(d, D, cos_match)))
                 return true;
         }
     return false;
@@ -196,6 +192,8 @@ public:
     void zip_seeds(int si);
     void extend_past_boundary_ends(int si);
     void collect_cross_jobs(int si);
+    void zip_across_junctions();
+    void zip_ends(int si, int ki, int sj, int kj);
     void cross_extensions();
     void finish() { soup_.finish(); }
 
@@ -295,7 +293,37 @@ void SheetTracer::zip_seeds(int si) {
         }
 }
 
-// Past a source end on the boundary (and, in mode DropAndClose, at a junction node): the nearest
+// Where one curve runs straight on through a junction node (the two halves of the fillet's
+// valence-5 curve), its sheets are the other's: with the continuation past the node dropped,
+// the end streamlines of the two are zipped across the node as one curve's would be. Without
+// this the quadrant between the two, where the field turns round the node, stayed open.
+void SheetTracer::zip_across_junctions() {
+    if (!zips(junctions_)) return;
+    for (int si = 0; si < int(sources_.size()); ++si)
+        for (int e = 0; e < 2; ++e)
+            for (int sj = si + 1; sj < int(sources_.size()); ++sj)
+                for (int f = 0; f < 2; ++f)
+                    if (straight_through(sources_, si, e, sj, f))
+                        zip_ends(si, junction_end(sources_[si], e).seed, sj, junction_end(sources_[sj], f).seed);
+}
+
+// Each direction of seed ki of source si zipped to the closest one (within match_deg) of seed kj
+// of source sj; pairs more than 3 h apart are bridged later, as diverging neighbours.
+void SheetTracer::zip_ends(int si, int ki, int sj, int kj) {
+    const std::vector<Eigen::Vector3d>&DA = sources_[si].seeds[ki].directions, &DB = sources_[sj].seeds[kj].directions;
+    for (int di = 0; di < int(DA.size()); ++di) {
+        int best = -1;
+        for (int dj = 0; dj < int(DB.size()); ++dj)
+            if (best < 0 || DA[di].dot(DB[dj]) > DA[di].dot(DB[best])) best = dj;
+        if (best < 0 || DA[di].dot(DB[best]) < cos_match_) continue;
+        const Traced &A = line(si, ki, di), &B = line(sj, kj, best);
+        if (!usable(A) || !usable(B)) continue;
+        if (soup_.ribbon(A, B, si, widen(si)) > 3 * h_) diverging_.push_back({A.points, B.points});
+        ++stats_.ribbons;
+    }
+}
+
+// Past a source end on the boundary (and, in the modes that close, at a junction node): the nearest
 // complete seed's streamlines, translated to the end point and 0.5 h beyond it.
 void SheetTracer::extend_past_boundary_ends(int si) {
     const std::vector<SheetSeed>& S = sources_[si].seeds;
@@ -305,7 +333,7 @@ void SheetTracer::extend_past_boundary_ends(int si) {
     int full = 0, most = 0;
     for (auto [k, c] : counts) if (c > most) most = c, full = k;
     for (int e = 0; e < 2; ++e) {
-        const bool junc = sources_[si].junction[e] >= 0 && junctions_ == BlockOptions::Junctions::DropAndClose;
+        const bool junc = sources_[si].junction[e] >= 0 && closes(junctions_);
         if ((!sources_[si].boundary_end[e] && !junc) || full == 0) continue;
         int k0 = -1;
         for (int j = 0; j < int(S.size()) && k0 < 0; ++j) {
@@ -438,6 +466,7 @@ SheetSoup build_sheets(const TetMesh& mesh, const FrameField& field, const TetLo
         tracer.collect_cross_jobs(si);
         tracer.extend_past_boundary_ends(si);
     }
+    tracer.zip_across_junctions();
     tracer.cross_extensions();
     tracer.finish();
     stats.sources += int(sources.size());
