@@ -62,6 +62,18 @@ def test_notch_hex_mesh_files_agree_with_the_report(tmp_path):
         assert "%d elements" % h["hexes"] in p.stdout
 
 
+def test_the_notchs_fillet_correction_is_hex_meshed_through_its_seven_blocks(tmp_path):
+    # The paper's Fig. 6a carried on to hexahedra: the notch's concave arc filleted by the
+    # correction, its 7 blocks around the fillet's node, each a structured grid of hexes.
+    r, err = hexmesh(tmp_path, "notch.step", "--method", "fillet")
+    assert r["correction"]["method"] == "fillet" and r["correction"]["kept"]
+    b, h = r["blocks"], r["hexmesh"]
+    assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (7, 7, 9, 9)
+    assert h["done"] and h["inverted"] == 0 and h["min_scaled_jacobian"] > 0
+    assert len(h["blocks"]) == 7 and sum(x["hexes"] for x in h["blocks"]) == h["hexes"]
+    assert abs(h["volume"] - h["part_volume"]) <= 0.01 * h["part_volume"]
+
+
 def test_order_two_writes_twenty_node_hexes(tmp_path):
     r, _ = hexmesh(tmp_path, "cube.step", "--layers", "3", "--order", "2")
     h = r["hexmesh"]
