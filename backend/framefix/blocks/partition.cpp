@@ -57,24 +57,11 @@ int compact_labels(Eigen::VectorXi& labels) {
     return int(id.size());
 }
 
-Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<char>& cut,
-                               const BlockOptions& options) {
-    const int nt = mesh.num_tets();
-    const std::vector<int> vl = vertex_labels(mesh, topo, cut, options.min_component_vertices);
-    std::vector<int> size(mesh.num_vertices(), 0);
-    for (int l : vl) size[l] += 1;
-    // Tets: majority of their vertices' labels, ties to the larger component.
-    Eigen::VectorXi lab(nt);
-    for (int t = 0; t < nt; ++t) {
-        long long best = -1;
-        for (int i = 0; i < 4; ++i) {
-            const int l = vl[mesh.tets(t, i)];
-            int same = 0;
-            for (int j = 0; j < 4; ++j) same += vl[mesh.tets(t, j)] == l;
-            const long long score = (long long)same * 1000000000LL + size[l];
-            if (score > best) best = score, lab[t] = l;
-        }
-    }
+// Splits each label into face-connected pieces; pieces below `threshold` tets merge into the
+// neighbour with the most shared faces. Returns the number of pieces merged.
+int merge_small_pieces(const TetTopology& topo, Eigen::VectorXi& lab, int threshold) {
+    const int nt = int(lab.size());
+    int merged = 0;
     // Face-connected pieces of each label.
     DisjointSet uf(nt);
     for (int f = 0; f < int(topo.face_tets.rows()); ++f) {
@@ -85,7 +72,6 @@ Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, con
     compact_labels(lab);
     // Small pieces merge into the neighbour with the most shared faces; only into a larger piece
     // (or an equal one with a larger id), so that no two pieces swap.
-    const int threshold = std::max(10, int(options.min_piece_fraction * nt));
     for (int it = 0; it < 50; ++it) {
         const int n = lab.maxCoeff() + 1;
         std::vector<int> sz(n, 0);
@@ -109,11 +95,34 @@ Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, con
             if (best >= 0) map[l] = best, any = true;
         }
         if (!any) break;
+        for (int l = 0; l < n; ++l) merged += map[l] != l;
         for (int l = 0; l < n; ++l)  // chains end: every step goes to a strictly "bigger" piece
             while (map[map[l]] != map[l]) map[l] = map[map[l]];
         for (int t = 0; t < nt; ++t) lab[t] = map[lab[t]];
         compact_labels(lab);
     }
+    return merged;
+}
+
+Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<char>& cut,
+                               const BlockOptions& options) {
+    const int nt = mesh.num_tets();
+    const std::vector<int> vl = vertex_labels(mesh, topo, cut, options.min_component_vertices);
+    std::vector<int> size(mesh.num_vertices(), 0);
+    for (int l : vl) size[l] += 1;
+    // Tets: majority of their vertices' labels, ties to the larger component.
+    Eigen::VectorXi lab(nt);
+    for (int t = 0; t < nt; ++t) {
+        long long best = -1;
+        for (int i = 0; i < 4; ++i) {
+            const int l = vl[mesh.tets(t, i)];
+            int same = 0;
+            for (int j = 0; j < 4; ++j) same += vl[mesh.tets(t, j)] == l;
+            const long long score = (long long)same * 1000000000LL + size[l];
+            if (score > best) best = score, lab[t] = l;
+        }
+    }
+    merge_small_pieces(topo, lab, std::max(10, int(options.min_piece_fraction * nt)));
     // Spikes of the staircase: a tet with >= 3 face neighbours in one other block joins it.
     for (int pass = 0; pass < 10; ++pass) {
         int changed = 0;

@@ -21,6 +21,13 @@ void cut_near_polylines(const TetMesh& mesh, const TetTopology& topo, const Poin
 Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<char>& cut,
                                const BlockOptions& options);
 
+// Splits each label into face-connected pieces; pieces below `threshold` tets merge into the
+// neighbour with the most shared faces (only into a larger piece, so no two swap). Returns the
+// number of pieces merged. Also run after the staircase cleaning, which can cut a few tets of a
+// block off from the rest (notch_filleted at 0.6 x: two tets left on the boundary, a second
+// boundary sphere of the block).
+int merge_small_pieces(const TetTopology& topo, Eigen::VectorXi& labels, int threshold);
+
 // Rule 7: moves the minority side at non-manifold block-boundary edges and pinched vertices until
 // every block boundary is a manifold (<= 10 passes each). Returns relabelled, compacted labels.
 Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi labels);
