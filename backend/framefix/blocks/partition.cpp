@@ -57,8 +57,10 @@ int compact_labels(Eigen::VectorXi& labels) {
     return int(id.size());
 }
 
-// Splits each label into face-connected pieces; pieces below `threshold` tets merge into the
-// neighbour with the most shared faces. Returns the number of pieces merged.
+int small_piece_tets(int num_tets, const BlockOptions& options) {
+    return std::max(10, int(options.min_piece_fraction * num_tets));
+}
+
 int merge_small_pieces(const TetTopology& topo, Eigen::VectorXi& lab, int threshold) {
     const int nt = int(lab.size());
     int merged = 0;
@@ -122,7 +124,7 @@ Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, con
             if (score > best) best = score, lab[t] = l;
         }
     }
-    merge_small_pieces(topo, lab, std::max(10, int(options.min_piece_fraction * nt)));
+    merge_small_pieces(topo, lab, small_piece_tets(nt, options));
     // Spikes of the staircase: a tet with >= 3 face neighbours in one other block joins it.
     for (int pass = 0; pass < 10; ++pass) {
         int changed = 0;

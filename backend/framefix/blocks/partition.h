@@ -28,6 +28,9 @@ Eigen::VectorXi partition_tets(const TetMesh& mesh, const TetTopology& topo, con
 // boundary sphere of the block).
 int merge_small_pieces(const TetTopology& topo, Eigen::VectorXi& labels, int threshold);
 
+// Pieces below this many tets merge: min_piece_fraction of the tets, at least 10.
+int small_piece_tets(int num_tets, const BlockOptions& options);
+
 // Rule 7: moves the minority side at non-manifold block-boundary edges and pinched vertices until
 // every block boundary is a manifold (<= 10 passes each). Returns relabelled, compacted labels.
 Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi labels);
