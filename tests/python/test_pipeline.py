@@ -108,7 +108,7 @@ def test_blocks_at_a_junction_node_list_each_mode_tried_and_keep_the_best():
     kept one has the most valid blocks."""
     r = framefix.build_blocks(str(SAMPLES / "notch_filleted.step"), method="none")
     tries = r.blocks.junction_tries
-    assert [t["mode"] for t in tries] == ["continue", "drop", "drop+close", "drop+zip", "drop+close+zip"]
+    assert [t["mode"] for t in tries] == ["continue", "drop", "drop+close", "drop+zip", "drop+close+zip", "continue+close"]
     kept = next(t for t in tries if t["mode"] == r.blocks.junction_mode)
     assert (kept["count"], kept["valid"]) == (r.blocks.count, r.blocks.valid)
     assert kept["valid"] == max(t["valid"] for t in tries)

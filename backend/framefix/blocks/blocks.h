@@ -54,7 +54,8 @@ struct BlockOptions {
     // DropAndClose: those dropped, and every sheet carried to the node and 0.5 h past it.
     // ...AndZip: also, where one curve runs straight on through the node into another, their end
     // streamlines are zipped across it, as one curve's would be.
-    enum class Junctions { Continue, Drop, DropAndClose, DropAndZip, DropCloseAndZip };
+    // ContinueAndClose: every sheet continued, and also carried to the node and 0.5 h past it.
+    enum class Junctions { Continue, Drop, DropAndClose, DropAndZip, DropCloseAndZip, ContinueAndClose };
     Junctions junctions = Junctions::Continue;
     // Also partition with the other Junctions modes where the graph has such a node (the zip
     // modes only where a curve runs straight on through one), and keep the best blocks
@@ -156,7 +157,7 @@ struct BlockDecomposition {
     // Junction nodes (docs/algorithms.md#junction-nodes): each mode tried, in order, with its
     // blocks, and the one kept; empty when the graph has no such node.
     struct JunctionTry {
-        std::string mode;          // "continue", "drop", "drop+close", "drop+zip", "drop+close+zip"
+        std::string mode;          // "continue", "drop", "drop+close", "drop+zip", "drop+close+zip", "continue+close"
         int count = 0, valid = 0, pairs = 0, conforming_pairs = 0;
     };
     std::vector<JunctionTry> junction_tries;

@@ -269,14 +269,14 @@ bool has_junction(const std::vector<SheetSource>& sources) {
 }
 
 // The configured mode first; with try_junctions and a junction node in the graph, the others
-// (those that zip only where a curve runs straight on through the node). The modes of before
-// 2026-12-05's zip come first, so that on a tie their blocks stay.
+// (those that zip only where a curve runs straight on through the node). Older modes come first,
+// so that on a tie their blocks stay.
 std::vector<BlockOptions::Junctions> junction_modes(const std::vector<SheetSource>& sources, const BlockOptions& o) {
     using J = BlockOptions::Junctions;
     std::vector<J> modes{o.junctions};
     if (!o.try_junctions || !has_junction(sources)) return modes;
     const bool straight = has_straight_junction(sources);
-    for (J m : {J::Continue, J::Drop, J::DropAndClose, J::DropAndZip, J::DropCloseAndZip})
+    for (J m : {J::Continue, J::Drop, J::DropAndClose, J::DropAndZip, J::DropCloseAndZip, J::ContinueAndClose})
         if (m != o.junctions && (straight || (m != J::DropAndZip && m != J::DropCloseAndZip))) modes.push_back(m);
     return modes;
 }
@@ -288,6 +288,7 @@ const char* junction_name(BlockOptions::Junctions m) {
         case BlockOptions::Junctions::DropAndClose: return "drop+close";
         case BlockOptions::Junctions::DropAndZip: return "drop+zip";
         case BlockOptions::Junctions::DropCloseAndZip: return "drop+close+zip";
+        case BlockOptions::Junctions::ContinueAndClose: return "continue+close";
     }
     return "";
 }

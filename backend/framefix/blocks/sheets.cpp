@@ -142,7 +142,10 @@ Points singular_points(const SingularityGraph& graph) {
 namespace {
 
 using Junctions = BlockOptions::Junctions;
-bool closes(Junctions m) { return m == Junctions::DropAndClose || m == Junctions::DropCloseAndZip; }
+bool closes(Junctions m) {
+    return m == Junctions::DropAndClose || m == Junctions::DropCloseAndZip || m == Junctions::ContinueAndClose;
+}
+bool drops(Junctions m) { return m != Junctions::Continue && m != Junctions::ContinueAndClose; }
 bool zips(Junctions m) { return m == Junctions::DropAndZip || m == Junctions::DropCloseAndZip; }
 
 bool any_within(const Eigen::Vector3d& a, const std::vector<Eigen::Vector3d>& D, double cos_min) {
@@ -208,7 +211,7 @@ private:
         return any_within(a, D, cos_match_);
     }
     bool continued(int si, int e, const Eigen::Vector3d& d, const Eigen::Vector3d& out) const {
-        return junctions_ != BlockOptions::Junctions::Continue && continued_at_junction(sources_, si, e, d, out, cos_match_);
+        return drops(junctions_) && continued_at_junction(sources_, si, e, d, out, cos_match_);
     }
 
     const TetMesh& mesh_;
