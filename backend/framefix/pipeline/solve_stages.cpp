@@ -1,5 +1,7 @@
 #include "framefix/pipeline/solve_stages.h"
 
+#include "framefix/singularities/edge_absorption.h"
+
 namespace framefix::detail {
 
 FieldStage solve_field(const MeshStage& mesh, Constraints constraints, const RunOptions& options,
@@ -16,7 +18,9 @@ FieldStage solve_field(const MeshStage& mesh, Constraints constraints, const Run
 SingularityGraph find_singularities(const MeshStage& mesh, const FieldStage& field, const RunOptions& options) {
     SingularityOptions so = options.singularities;
     if (so.threads == 0) so.threads = options.threads;
-    return extract_singularities(mesh.tets, mesh.topology, field.frames, so);
+    SingularityGraph g = extract_singularities(mesh.tets, mesh.topology, field.frames, so);
+    absorb_edge_curves(g, mesh.tets, mesh.features, so.absorb_radius * g.h_mean);
+    return g;
 }
 
 }  // namespace framefix::detail

@@ -68,6 +68,7 @@ void check_options(const SingularityOptions& o) {
     if (!(o.attach_distance >= 0))
         throw Error("singularities", "attach_distance must be >= 0 mean edge lengths (3)");
     if (!(o.node_core >= 0)) throw Error("singularities", "node_core must be >= 0 mean edge lengths (1.5)");
+    if (!(o.absorb_radius >= 0)) throw Error("singularities", "absorb_radius must be >= 0 mean edge lengths (1.5)");
 }
 
 // How many triangles at each end of an open curve lie in the core of a junction node (within
@@ -141,6 +142,22 @@ const char* to_string(CurveKind kind) {
     return "other";
 }
 
+void count_summary(SingularityGraph& g) {
+    SingularitySummary& s = g.summary;
+    s.curves = int(g.curves.size());
+    s.valence3 = s.valence5 = s.curves_3_5 = s.mixed_loops = 0;
+    for (const SingularCurve& c : g.curves) {
+        s.valence3 += c.kind == CurveKind::Valence3;
+        s.valence5 += c.kind == CurveKind::Valence5;
+        s.curves_3_5 += c.kind == CurveKind::ThreeFive;
+        s.mixed_loops += c.kind == CurveKind::Other;
+    }
+    s.nodes = int(g.nodes.size());
+    s.invalid_nodes = 0;
+    for (const SingularNode& n : g.nodes) s.invalid_nodes += !n.valid;
+    s.meshable = s.curves_3_5 == 0 && s.invalid_nodes == 0;
+}
+
 SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
                                        const SingularityOptions& options) {
     const auto start = std::chrono::steady_clock::now();
@@ -192,17 +209,8 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
         n.valid = on_feature || (is_valid_smooth_boundary_node(n.n3, n.n5) && axes_ok);
     }
 
+    count_summary(g);
     SingularitySummary& s = g.summary;
-    s.curves = int(g.curves.size());
-    for (const SingularCurve& c : g.curves) {
-        s.valence3 += c.kind == CurveKind::Valence3;
-        s.valence5 += c.kind == CurveKind::Valence5;
-        s.curves_3_5 += c.kind == CurveKind::ThreeFive;
-        s.mixed_loops += c.kind == CurveKind::Other;
-    }
-    s.nodes = int(g.nodes.size());
-    for (const SingularNode& n : g.nodes) s.invalid_nodes += !n.valid;
-    s.meshable = s.curves_3_5 == 0 && s.invalid_nodes == 0;
     for (int v : h.valence) {
         s.singular_faces += v != 0;
         s.complex_faces += v == -1;

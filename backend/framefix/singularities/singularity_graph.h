@@ -60,6 +60,9 @@ struct SingularityGraph {
     Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> face_axis;  // #faces x 3 holonomy axis w
     std::vector<SingularCurve> curves;
     std::vector<SingularNode> nodes;
+    // Curves glued to an ambiguous feature curve (edge_absorption.h): not in `curves`, the nodes
+    // or the summary; their ends are -1.
+    std::vector<SingularCurve> absorbed;
     SingularitySummary summary;
     double seconds = 0;
     double h_mean = 0;                   // mean mesh edge length, model units
@@ -90,7 +93,16 @@ struct SingularityOptions {
     double attach_distance = 3;          // dead-end attachment radius, in mean edge lengths
     double node_core = 1.5;              // triangles this close to a junction node (mean edge
                                          // lengths) do not vote on a curve's valence
+    // Curves within this many mean edge lengths of an ambiguous feature curve along their whole
+    // length are glued to it (edge_absorption.h; applied by the pipeline, which knows the
+    // features). 0 keeps them. 1.5: the curve the field lays along a chamfer's edge runs 0.2-1.2 h
+    // off it, and blocks need about 3 h to be resolved.
+    double absorb_radius = 1.5;
 };
+
+// Counts the summary's curves, nodes and verdict again from `curves` and `nodes` (the face counts
+// stay).
+void count_summary(SingularityGraph& graph);
 
 SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& topo, const FrameField& field,
                                        const SingularityOptions& options = {});

@@ -1,0 +1,26 @@
+#pragma once
+// Singular curves that hug an ambiguous feature curve are part of the boundary
+// (docs/algorithms.md#curves-along-ambiguous-edges). A chamfer's 135 degree edge, or a 45 degree
+// wedge, is halfway between two hex corner types: the field settles it by laying a valence-3 or
+// valence-5 curve within a mesh edge of it along its length. Glued to the edge, such a curve only
+// says whether the edge is a block corner or flat there; no hex mesh needs it inside.
+#include "framefix/mesh/features.h"
+#include "framefix/mesh/tet_mesh.h"
+#include "framefix/singularities/singularity_graph.h"
+
+namespace framefix {
+
+// A dihedral angle (degrees, inside the solid) this far or further from every multiple of 90
+// degrees is ambiguous: 22.5 is halfway to the next one, so both hex corner types fit within
+// 22.5 degrees.
+constexpr double kAmbiguousFromRightDeg = 22.5;
+
+// Whether a feature edge's dihedral angle, at every sample, is ambiguous (135, 45, 225 degrees).
+bool ambiguous_edge(const EdgeFeature& e);
+
+// Moves every curve whose points all lie within `radius` (model units) of a mesh edge on an
+// ambiguous feature curve from `graph.curves` to `graph.absorbed`, drops the nodes left without a
+// curve, and counts the nodes and summary again. Returns how many curves moved.
+int absorb_edge_curves(SingularityGraph& graph, const TetMesh& mesh, const FeatureSet& features, double radius);
+
+}  // namespace framefix
