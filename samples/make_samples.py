@@ -214,11 +214,43 @@ def l_prism():
     return Part.Face(Part.makePolygon(pts)).extrude(V(0, 0, 0.5))
 
 
+def top_edges(box, z, along=None):
+    """The box's edges at height z, all or only those along the axis `along` (0 x, 1 y)."""
+    def flat(e):
+        a, b = e.Vertexes[0].Point, e.Vertexes[-1].Point
+        return abs(a.z - z) < 1e-9 and abs(b.z - z) < 1e-9
+    def runs(e):
+        a, b = e.Vertexes[0].Point, e.Vertexes[-1].Point
+        return along is None or abs((a - b)[1 - along]) < 1e-9
+    return [e for e in box.Edges if flat(e) and runs(e)]
+
+
+def chamfer_box():
+    """A machined block: a 2 x 1 x 0.6 box with its back top edge chamfered 0.25 (135 degree edges)."""
+    box = Part.makeBox(2, 1, 0.6)
+    back = [e for e in top_edges(box, 0.6, along=0) if e.Vertexes[0].Point.y > 0.5]
+    return box.makeChamfer(0.25, back)
+
+
+def chamfer_top():
+    """The 2 x 1 x 0.6 box with all four top edges chamfered 0.15, mitred at the corners."""
+    box = Part.makeBox(2, 1, 0.6)
+    return box.makeChamfer(0.15, top_edges(box, 0.6))
+
+
+def gusset():
+    """An L bracket (2 long, legs 1 x 0.2) stiffened by a 45 degree triangular gusset 0.2 thick."""
+    bracket = Part.makeBox(2, 0.2, 1).fuse(Part.makeBox(2, 1, 0.2))
+    pts = [V(0.9, 0.2, 0.2), V(0.9, 0.8, 0.2), V(0.9, 0.2, 0.8), V(0.9, 0.2, 0.2)]
+    web = Part.Face(Part.makePolygon(pts)).extrude(V(0.2, 0, 0))
+    return bracket.fuse(web).removeSplitter()
+
+
 SAMPLES = [notch, box_arc, box_arc_curved, half_sphere_box, groove, two_cylinders, cube, cylinder, l_prism,
            notch_filleted, half_sphere_box_filleted, groove_filleted,
            notch_wide, notch_shallow, half_sphere_box_small, half_sphere_box_large, groove_wide, groove_narrow,
            groove_wide_filleted, box_arc_wide, box_arc_small, box_arc_curved_flat, box_arc_curved_steep, sphere,
-           rounded_box, tube]
+           rounded_box, tube, chamfer_box, chamfer_top, gusset]
 
 
 def write_bad_inputs():

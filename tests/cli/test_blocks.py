@@ -30,6 +30,24 @@ def test_sanity_parts_give_the_expected_valid_blocks(analyze, tmp_path, name, co
     assert sum(k["tets"] for k in b["blocks"]) == r["mesh"]["tets"]
 
 
+@pytest.mark.parametrize("size", ["1", "0.7"])
+def test_a_chamfered_box_is_one_hexahedron_with_the_chamfer_folded_into_one_face(tmp_path, size):
+    """docs/algorithms.md#curves-along-ambiguous-edges: the field lays curves along the chamfer's
+    135 degree edges; glued to them, the box has no singular curve, and its one block is a
+    hexahedron once the chamfer joins one of its two neighbouring faces (never both)."""
+    code, _, err = run("blocks", SAMPLES / "chamfer_box.step", "--size-factor", size, "--out", tmp_path, "--quiet")
+    assert code == 0, err
+    r = json.loads((tmp_path / "report.json").read_text())
+    ambiguous = sorted(e["edge"] for e in r["features"]["ambiguous"])
+    assert len(ambiguous) == 2
+    s = r["singularities"]
+    assert s["summary"]["curves"] == 0 and s["summary"]["meshable"]
+    assert s["absorbed"] and all(c["ends"] == [-1, -1] for c in s["absorbed"])
+    b = r["blocks"]
+    assert (b["count"], b["valid"]) == (1, 1)
+    assert len(b["joined_edges"]) == 1 and b["joined_edges"][0] in ambiguous
+
+
 def test_notch_after_snapping_gives_seven_valid_conforming_blocks(tmp_path):
     # The snapped 3-5 curve leaves the notch with no singular curve; the sheets of its 18 feature
     # curves and of the snapped path cut it into 7 hexahedral blocks with 9 neighbour pairs.

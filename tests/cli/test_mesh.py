@@ -58,6 +58,10 @@ FEATURES = {
     "sphere.step": (0, 0, 0, 0),  # its seam and pole edges are no features
     "rounded_box.step": (0, 0, 0, 0),  # every edge is a fillet's tangent seam
     "tube.step": (4, 4, 0, 0),  # its four circles; the two seams are no features
+    # A chamfer's two 135 degree edges round to valence 2; the four chamfers' mitres (120 degrees) to 1.
+    "chamfer_box.step": (15, 13, 2, 0), "chamfer_top.step": (20, 12, 8, 0),
+    # The L's inner edge split in two by the gusset, the gusset's sides meeting both legs (4), its two 225 degree edges.
+    "gusset.step": (27, 19, 0, 8),
 }
 
 

@@ -120,6 +120,11 @@ EXPECT = {
     "sphere.step": cube_in_sphere,
     "rounded_box.step": cube_in_sphere,
     "tube.step": exactly(0, 0, 0, 0),  # not in the paper: a bushing, no singular curve
+    # Not in the paper: machined parts with 135 and 225 degree edges; the curves the field lays
+    # along them are glued to them (docs/algorithms.md#curves-along-ambiguous-edges).
+    "chamfer_box.step": exactly(0, 0, 0, 0),
+    "chamfer_top.step": exactly(0, 0, 0, 0),
+    "gusset.step": exactly(0, 0, 0, 0),
 }
 
 # Known deviations, kept visible: strict, so that a fix shows up as a failure to remove the mark.
@@ -128,7 +133,15 @@ KNOWN = {
     ("groove_narrow.step", "1"): "a 0.1-wide groove: one 3-5 curve where the paper has two",
     ("groove_narrow.step", "1.5"): "a 0.1-wide groove: one 3-5 curve where the paper has two",
 }
-UNSTABLE = {}  # sample -> why its topology changes with the size (none since narrow faces keep the default size)
+KNOWN.update({
+    ("chamfer_box.step", "1.5"): "one valence-5 curve along the chamfer strays further than 1.5 h from its edges",
+    ("chamfer_top.step", "0.6"): "two valence-3 curves left near the chamfers' mitres",
+    ("chamfer_top.step", "1"): "two valence-3 curves left near the chamfers' mitres",
+})
+UNSTABLE = {
+    "chamfer_box.step": KNOWN[("chamfer_box.step", "1.5")],
+    "chamfer_top.step": KNOWN[("chamfer_top.step", "1")],
+}
 
 
 def test_every_sample_has_an_expectation():

@@ -147,6 +147,10 @@ struct BlockDecomposition {
     // Imprinted curves (B-rep edge ids, ascending) the field does not follow: they emit no sheet
     // and block faces run across them (the hex mesh will not follow them either).
     std::vector<int> ignored_imprints;
+    // Ambiguous feature curves (a chamfer's 135 degree edges; B-rep edge ids, ascending) that the
+    // block faces run across, chosen so that the blocks are hexahedra
+    // (docs/algorithms.md#block-faces-across-ambiguous-edges).
+    std::vector<int> joined_edges;
     // Snapped paths (indices into the paths given) on a convex surface: they emit no sheet, and the
     // curtain below each end on a curved concave curve has a corner line that does
     // (docs/algorithms.md#curtain-corners). `curtain_corners` counts those lines.

@@ -262,6 +262,38 @@ Validated partition_best(const TetMesh& mesh, const TetTopology& topo, const Poi
     return v;
 }
 
+// How far the invalid blocks are from a hexahedron: faces, edges and corners off 6, 12 and 8.
+int hex_defect(const BlockDecomposition& b) {
+    int d = 0;
+    for (const BlockInfo& i : b.blocks)
+        if (!i.valid) d += std::abs(i.faces - 6) + std::abs(i.edges - 12) + std::abs(i.corners - 8);
+    return d;
+}
+
+// Block faces across ambiguous feature curves (docs/algorithms.md#block-faces-across-ambiguous-edges):
+// a chamfer is folded into one of its two neighbouring faces, never both. Greedy, one curve at a
+// time in id order: a curve is joined when the blocks then score better, or as well with fewer
+// faces, edges and corners off a hexahedron's. The partition stays; only the faces change.
+void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                          const std::vector<SnappedPath>& paths, double h, const BlockOptions& options,
+                          BlockDecomposition& out, Validated& v) {
+    auto better = [](const BlockDecomposition& a, const BlockDecomposition& b) {
+        return std::tuple(score(a), -hex_defect(a)) > std::tuple(score(b), -hex_defect(b));
+    };
+    for (const EdgeFeature& e : features.edges) {
+        if (!ambiguous_edge(e) || out.valid == out.count) continue;
+        std::vector<int> joined = out.ignored_imprints;
+        joined.insert(joined.end(), out.joined_edges.begin(), out.joined_edges.end());
+        joined.push_back(e.edge);
+        std::sort(joined.begin(), joined.end());
+        BlockDecomposition tried = out;
+        tried.joined_edges.push_back(e.edge);
+        Validated w = validate_blocks(mesh, topo, surface_groups(mesh, topo, features, joined, paths), h, options, tried);
+        count_conformity(w, h, options, tried);
+        if (better(tried, out)) out = std::move(tried), v = std::move(w);
+    }
+}
+
 bool has_junction(const std::vector<SheetSource>& sources) {
     for (const SheetSource& s : sources)
         if (s.junction[0] >= 0 || s.junction[1] >= 0) return true;
@@ -338,7 +370,8 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     std::vector<SheetSource> sources = singular_sources(mesh, field, graph, locator, h, options);
     const std::vector<int> imprints = followed_imprints(mesh, features, field);
     for (const EdgeFeature& e : features.edges)
-        if (e.valence == 2 && !std::binary_search(imprints.begin(), imprints.end(), e.edge)) out.ignored_imprints.push_back(e.edge);
+        if (e.valence == 2 && !ambiguous_edge(e) && !std::binary_search(imprints.begin(), imprints.end(), e.edge))
+            out.ignored_imprints.push_back(e.edge);
     std::sort(out.ignored_imprints.begin(), out.ignored_imprints.end());
     const std::vector<char> convex = convex_paths(mesh, features, paths, h);
     for (int i = 0; i < int(convex.size()); ++i)
@@ -372,6 +405,7 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
         Validated w = partition_best(mesh, topo, singular, group, h, options, cut);
         if (score(cut) > score(out)) out = std::move(cut), v = std::move(w);
     }
+    join_ambiguous_edges(mesh, topo, features, paths, h, options, out, v);
     out.surfaces = block_surfaces(mesh, v.surface, v.faces);
     out.boundary = std::move(v.surface);
     out.faces = std::move(v.faces);

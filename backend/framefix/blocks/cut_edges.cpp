@@ -56,7 +56,8 @@ std::vector<char> cut_by_sheets(const TetMesh& mesh, const TetTopology& topo, co
     };
     auto id = [&](int i, int j, int k) { return (size_t(k) * dims[1] + j) * dims[0] + i; };
     const size_t ncell = size_t(dims[0]) * dims[1] * dims[2];
-    std::vector<int> start(ncell + 1, 0), items;
+    std::vector<size_t> start(ncell + 1, 0);  // 64 bits: long ribbon triangles span many cells
+    std::vector<int> items;
     auto corner = [&](int t, int k) { return Eigen::Vector3d(sheets.points.row(sheets.triangles(t, k)).transpose()); };
     const double pad = 1e-7;
     for (int pass = 0; pass < 2; ++pass) {
@@ -64,7 +65,7 @@ std::vector<char> cut_by_sheets(const TetMesh& mesh, const TetTopology& topo, co
             for (size_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
             items.resize(start[ncell]);
         }
-        std::vector<int> fill(start.begin(), start.end() - 1);
+        std::vector<size_t> fill(start.begin(), start.end() - 1);
         for (int t = 0; t < nt; ++t) {
             Eigen::Vector3i i0, i1;
             const Eigen::Vector3d a = corner(t, 0).cwiseMin(corner(t, 1)).cwiseMin(corner(t, 2)).array() - pad;
@@ -88,7 +89,7 @@ std::vector<char> cut_by_sheets(const TetMesh& mesh, const TetTopology& topo, co
             for (int j = i0[1]; j <= i1[1] && !cut[e]; ++j)
                 for (int i = i0[0]; i <= i1[0] && !cut[e]; ++i) {
                     const size_t c = id(i, j, k);
-                    for (int s = start[c]; s < start[c + 1]; ++s) {
+                    for (size_t s = start[c]; s < start[c + 1]; ++s) {
                         const int t = items[s];
                         if (segment_hits(o, d, corner(t, 0), corner(t, 1), corner(t, 2))) { cut[e] = 1; break; }
                     }

@@ -213,8 +213,8 @@ std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& featur
     // to 45 deg (a quarter arc under a constant frame: 22 deg on average).
     constexpr double kFollowDeg = 15;
     std::vector<int> imprinted, out;
-    for (const EdgeFeature& e : features.edges)
-        if (e.valence == 2) imprinted.push_back(e.edge);
+    for (const EdgeFeature& e : features.edges)  // a chamfer's 135 degree edge is no imprint
+        if (e.valence == 2 && !ambiguous_edge(e)) imprinted.push_back(e.edge);
     for (const FeatureSeeds& curve : feature_seeds(mesh, features, field, imprinted)) {
         double sum = 0;
         int n = 0;

@@ -62,7 +62,8 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
 // Imprinted feature curves (valence 2) that the field follows: at the curve's inner vertices the
 // frame axis closest to the tangent is within kFollowDeg of it on average. A field that ignores an
 // imprint (box with an arc after snapping: "as if there were no imprinted curve") gives the blocks
-// no reason to follow it. B-rep edge ids, ascending.
+// no reason to follow it. Ambiguous edges (a chamfer's 135 degrees) are not imprints: they are
+// left to the block faces (build_blocks). B-rep edge ids, ascending.
 std::vector<int> followed_imprints(const TetMesh& mesh, const FeatureSet& features, const FrameField& field);
 
 // The chain of a closed feature curve (a circle) ends next to where it starts: its two end seeds

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framefix/core/error.h"
+#include "framefix/singularities/edge_absorption.h"
 
 namespace framefix {
 namespace {
@@ -23,22 +24,25 @@ json summary_json(const SingularitySummary& s) {
             {"meshable", s.meshable}};
 }
 
+json curve_json(const SingularCurve& c) {
+    json pts = json::array();
+    for (int i = 0; i < c.points.rows(); ++i) pts.push_back(point(c.points.row(i).transpose()));
+    return {{"id", c.id},
+            {"kind", to_string(c.kind)},
+            {"length", c.length},
+            {"ends", json::array({c.ends[0], c.ends[1]})},
+            {"closed", c.closed},
+            {"end_valences", json::array({c.end_valence[0], c.end_valence[1]})},
+            {"triangles", c.faces.size()},
+            {"transition", c.transition},
+            {"stable_direction", point(c.stable_direction)},
+            {"points", pts}};
+}
+
 json singularities_json(const SingularityGraph& g) {
-    json curves = json::array(), nodes = json::array();
-    for (const auto& c : g.curves) {
-        json pts = json::array();
-        for (int i = 0; i < c.points.rows(); ++i) pts.push_back(point(c.points.row(i).transpose()));
-        curves.push_back({{"id", c.id},
-                          {"kind", to_string(c.kind)},
-                          {"length", c.length},
-                          {"ends", json::array({c.ends[0], c.ends[1]})},
-                          {"closed", c.closed},
-                          {"end_valences", json::array({c.end_valence[0], c.end_valence[1]})},
-                          {"triangles", c.faces.size()},
-                          {"transition", c.transition},
-                          {"stable_direction", point(c.stable_direction)},
-                          {"points", pts}});
-    }
+    json curves = json::array(), nodes = json::array(), absorbed = json::array();
+    for (const auto& c : g.curves) curves.push_back(curve_json(c));
+    for (const auto& c : g.absorbed) absorbed.push_back(curve_json(c));
     for (const auto& n : g.nodes)
         nodes.push_back({{"id", n.id},
                          {"position", point(n.position)},
@@ -46,7 +50,7 @@ json singularities_json(const SingularityGraph& g) {
                          {"n3", n.n3},
                          {"n5", n.n5},
                          {"valid", n.valid}});
-    return {{"curves", curves}, {"nodes", nodes}, {"summary", summary_json(g.summary)}};
+    return {{"curves", curves}, {"nodes", nodes}, {"absorbed", absorbed}, {"summary", summary_json(g.summary)}};
 }
 
 void add_features(json& j, const MeshStage& m) {
@@ -57,13 +61,16 @@ void add_features(json& j, const MeshStage& m) {
         for (int v : pl.vertices) pts.push_back(point(m.tets.points.row(v).transpose()));
         curves.push_back({{"edge", pl.edge}, {"valence", m.features.valence_of(pl.edge)}, {"points", pts}});
     }
-    json varying = json::array();
-    for (const auto& e : m.features.edges)
-        if (e.valence_varies)
-            varying.push_back({{"edge", e.edge}, {"angle_min_deg", e.angle_min_deg}, {"angle_max_deg", e.angle_max_deg}});
+    json varying = json::array(), ambiguous = json::array();
+    for (const auto& e : m.features.edges) {
+        const json one = {{"edge", e.edge}, {"angle_min_deg", e.angle_min_deg}, {"angle_max_deg", e.angle_max_deg}};
+        if (e.valence_varies) varying.push_back(one);
+        if (ambiguous_edge(e)) ambiguous.push_back(one);
+    }
     j["features"] = {{"curves", m.features.curves()},
                      {"by_valence", {{"1", by[1]}, {"2", by[2]}, {"3", by[3]}, {"4", by[4]}}},
-                     {"valence_varies", varying}};
+                     {"valence_varies", varying},
+                     {"ambiguous", ambiguous}};
     j["feature_curves"] = curves;
 }
 
@@ -183,6 +190,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"flat_corners", b.flat_corners},
             {"flat_edges", b.flat_edges},
             {"ignored_imprints", b.ignored_imprints},
+            {"joined_edges", b.joined_edges},
             {"convex_paths", b.convex_paths},
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},

@@ -61,15 +61,6 @@ void prune_nodes(SingularityGraph& g) {
 
 }  // namespace
 
-bool ambiguous_edge(const EdgeFeature& e) {
-    if (e.valence <= 0) return false;
-    for (double a : {e.angle_min_deg, e.angle_max_deg}) {
-        const double off = std::abs(a - 90.0 * std::round(a / 90.0));  // degrees to the nearest right multiple
-        if (off < kAmbiguousFromRightDeg) return false;
-    }
-    return true;
-}
-
 int absorb_edge_curves(SingularityGraph& g, const TetMesh& mesh, const FeatureSet& features, double radius) {
     std::vector<std::array<Vec3, 2>> segments;
     for (int e = 0; e < mesh.feature_edges.rows(); ++e) {
@@ -78,18 +69,16 @@ int absorb_edge_curves(SingularityGraph& g, const TetMesh& mesh, const FeatureSe
         segments.push_back({Vec3(mesh.points.row(mesh.feature_edges(e, 0))), Vec3(mesh.points.row(mesh.feature_edges(e, 1)))});
     }
     if (segments.empty() || radius <= 0) return 0;
-    std::vector<SingularCurve> kept;
-    int moved = 0;
-    for (SingularCurve& c : g.curves) {
-        if (hugs(c, segments, radius)) {
-            c.ends[0] = c.ends[1] = -1;
-            g.absorbed.push_back(std::move(c));
-            ++moved;
-        } else {
-            kept.push_back(std::move(c));
-        }
-    }
+    std::vector<char> glued(g.curves.size(), 0);
+    for (size_t i = 0; i < g.curves.size(); ++i) glued[i] = hugs(g.curves[i], segments, radius);
+    const int moved = int(std::count(glued.begin(), glued.end(), 1));
     if (moved == 0) return 0;
+    std::vector<SingularCurve> kept;
+    for (size_t i = 0; i < g.curves.size(); ++i) {
+        SingularCurve& c = g.curves[i];
+        if (glued[i]) c.ends[0] = c.ends[1] = -1;
+        (glued[i] ? g.absorbed : kept).push_back(std::move(c));
+    }
     g.curves = std::move(kept);
     for (size_t i = 0; i < g.curves.size(); ++i) g.curves[i].id = int(i);
     prune_nodes(g);

@@ -10,14 +10,6 @@
 
 namespace framefix {
 
-// A dihedral angle (degrees, inside the solid) this far or further from every multiple of 90
-// degrees is ambiguous: 22.5 is halfway to the next one, so both hex corner types fit within
-// 22.5 degrees.
-constexpr double kAmbiguousFromRightDeg = 22.5;
-
-// Whether a feature edge's dihedral angle, at every sample, is ambiguous (135, 45, 225 degrees).
-bool ambiguous_edge(const EdgeFeature& e);
-
 // Moves every curve whose points all lie within `radius` (model units) of a mesh edge on an
 // ambiguous feature curve from `graph.curves` to `graph.absorbed`, drops the nodes left without a
 // curve, and counts the nodes and summary again. Returns how many curves moved.

@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "backend/mesh/cube_fixture.h"
@@ -18,6 +20,23 @@ TEST(CreaseFeatures, CubeHasSixFacesTwelveConvexCurvesEightCorners) {
     }
     EXPECT_EQ(cf.mesh.feature_edges.rows(), 12 * 3);
     EXPECT_EQ(cf.mesh.corner_vertices.size(), 8);
+}
+
+// docs/algorithms.md#curves-along-ambiguous-edges: halfway between two hex corner types at every
+// sample (a chamfer's 135, a wedge's 45 or 60, a gusset's 225), never near a right multiple.
+TEST(CreaseFeatures, AmbiguousEdgesAreHalfwayBetweenCornerTypesAlongTheirWholeLength) {
+    auto edge = [](double lo, double hi) {
+        EdgeFeature e;
+        e.valence = int(std::lround(lo / 90)) > 0 ? int(std::lround(lo / 90)) : 1;
+        e.angle_min_deg = lo, e.angle_max_deg = hi;
+        return e;
+    };
+    for (double a : {45.0, 60.0, 117.0, 135.0, 138.0, 225.0}) EXPECT_TRUE(ambiguous_edge(edge(a, a))) << a;
+    for (double a : {90.0, 109.5, 180.0, 250.0, 270.0}) EXPECT_FALSE(ambiguous_edge(edge(a, a))) << a;
+    EXPECT_FALSE(ambiguous_edge(edge(135, 170)));  // near flat somewhere along it
+    EdgeFeature smooth = edge(135, 135);
+    smooth.valence = 0;
+    EXPECT_FALSE(ambiguous_edge(smooth));          // not a feature at all
 }
 
 TEST(CreaseFeatures, LPrismHasOneConcaveCurve) {
