@@ -7,13 +7,6 @@
 
 namespace framefix {
 
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d ab = b - a;
-    const double len2 = ab.squaredNorm();
-    const double s = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    return (p - (a + s * ab)).norm();
-}
-
 std::vector<int> vertices_near_paths(const Points& points, const std::vector<int>& candidates,
                                      const std::vector<std::vector<int>>& paths, double radius,
                                      int threads) {

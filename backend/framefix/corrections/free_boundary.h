@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "framefix/core/segment_distance.h"  // point_segment_distance, for callers
 #include "framefix/mesh/types.h"
 
 namespace framefix {
@@ -16,8 +17,5 @@ namespace framefix {
 std::vector<int> vertices_near_paths(const Points& points, const std::vector<int>& candidates,
                                      const std::vector<std::vector<int>>& paths, double radius,
                                      int threads = 0);
-
-// Distance from p to segment [a, b].
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 
 }  // namespace framefix

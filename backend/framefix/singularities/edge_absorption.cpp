@@ -2,8 +2,8 @@
 #include "framefix/singularities/edge_absorption.h"
 
 #include <algorithm>
-#include <cmath>
 
+#include "framefix/core/segment_distance.h"
 #include "framefix/singularities/node_validity.h"
 
 namespace framefix {
@@ -12,18 +12,11 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-    const Vec3 d = b - a;
-    const double len2 = d.squaredNorm();
-    const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-    return (p - (a + t * d)).norm();
-}
-
 bool hugs(const SingularCurve& c, const std::vector<std::array<Vec3, 2>>& segments, double radius) {
     for (int i = 0; i < c.points.rows(); ++i) {
         const Vec3 p = c.points.row(i).transpose();
         const bool near = std::any_of(segments.begin(), segments.end(), [&](const auto& s) {
-            return distance_to_segment(p, s[0], s[1]) <= radius;
+            return point_segment_distance(p, s[0], s[1]) <= radius;
         });
         if (!near) return false;
     }
