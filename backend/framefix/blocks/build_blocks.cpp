@@ -270,6 +270,25 @@ int hex_defect(const BlockDecomposition& b) {
     return d;
 }
 
+// #V: whether the vertex is in a tet of an invalid block.
+std::vector<char> on_invalid_block(const TetMesh& mesh, const BlockDecomposition& d) {
+    std::vector<char> on(size_t(mesh.num_vertices()), 0);
+    for (const BlockInfo& b : d.blocks)
+        if (!b.valid)
+            for (int t : b.tets)
+                for (int k = 0; k < 4; ++k) on[size_t(mesh.tets(t, k))] = 1;
+    return on;
+}
+
+// Whether a mesh edge of B-rep edge `edge` touches an invalid block: joining an edge between
+// valid blocks only could not make one more valid.
+bool touches_invalid_block(const TetMesh& mesh, const std::vector<char>& on_invalid, int edge) {
+    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
+        if (mesh.edge_tags[e] == edge && (on_invalid[size_t(mesh.feature_edges(e, 0))] || on_invalid[size_t(mesh.feature_edges(e, 1))]))
+            return true;
+    return false;
+}
+
 // Block faces across ambiguous feature curves (docs/algorithms.md#block-faces-across-ambiguous-edges):
 // a chamfer is folded into one of its two neighbouring faces, never both. Greedy, one curve at a
 // time in id order: a curve is joined when the blocks then score better, or as well with fewer
@@ -280,8 +299,11 @@ void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const Fe
     auto better = [](const BlockDecomposition& a, const BlockDecomposition& b) {
         return std::tuple(score(a), -hex_defect(a)) > std::tuple(score(b), -hex_defect(b));
     };
+    std::vector<char> on_invalid;
     for (const EdgeFeature& e : features.edges) {
         if (!ambiguous_edge(e) || out.valid == out.count) continue;
+        if (on_invalid.empty()) on_invalid = on_invalid_block(mesh, out);
+        if (!touches_invalid_block(mesh, on_invalid, e.edge)) continue;
         std::vector<int> joined = out.ignored_imprints;
         joined.insert(joined.end(), out.joined_edges.begin(), out.joined_edges.end());
         joined.push_back(e.edge);
@@ -290,7 +312,7 @@ void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const Fe
         tried.joined_edges.push_back(e.edge);
         Validated w = validate_blocks(mesh, topo, surface_groups(mesh, topo, features, joined, paths), h, options, tried);
         count_conformity(w, h, options, tried);
-        if (better(tried, out)) out = std::move(tried), v = std::move(w);
+        if (better(tried, out)) out = std::move(tried), v = std::move(w), on_invalid.clear();
     }
 }
 
