@@ -29,7 +29,7 @@ SurfaceGraph surface_graph(const TetMesh& mesh, const std::vector<Eigen::Vector3
     std::unordered_map<PairKey, std::vector<std::pair<int, int>>> sheets_of;  // edge -> (block, label)
     for (size_t t = 0; t < tris.size(); ++t)
         for (int k = 0; k < 3; ++k) sheets_of[edge_key(tris[t][k], tris[t][(k + 1) % 3], nv)].push_back(sheet[t]);
-    SurfaceGraph g{std::vector<std::vector<int>>(nv), std::vector<std::vector<int>>(nv), std::vector<char>(nv, 0)};
+    SurfaceGraph g{std::vector<std::vector<int>>(nv), std::vector<std::vector<int>>(nv), std::vector<char>(nv, 0), {}};
     for (int b = 0; b < int(mesh.boundary_faces.rows()); ++b)
         for (int k = 0; k < 3; ++k) g.on_boundary[mesh.boundary_faces(b, k)] = 1;
     for (auto& [key, ids] : sheets_of) {

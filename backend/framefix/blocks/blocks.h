@@ -61,6 +61,9 @@ struct BlockOptions {
     // modes only where a curve runs straight on through one), and keep the best blocks
     // (build_blocks' score).
     bool try_junctions = true;
+    // Also partition with the curves glued to ambiguous edges as sheet sources, where the graph has
+    // any, and keep the better blocks (docs/algorithms.md#sheets-from-glued-curves).
+    bool try_glued = true;
     double flat_deg = 35;          // a block edge whose two face normals are closer than this is flat
     int threads = 0;               // OpenMP threads, 0 = all
 };
@@ -151,6 +154,9 @@ struct BlockDecomposition {
     // block faces run across, chosen so that the blocks are hexahedra
     // (docs/algorithms.md#block-faces-across-ambiguous-edges).
     std::vector<int> joined_edges;
+    // Curves glued to ambiguous feature curves (SingularityGraph::absorbed) that emit sheets: the
+    // blocks are made with and without them and the better kept; 0 when without.
+    int glued_sources = 0;
     // Snapped paths (indices into the paths given) on a convex surface: they emit no sheet, and the
     // curtain below each end on a curved concave curve has a corner line that does
     // (docs/algorithms.md#curtain-corners). `curtain_corners` counts those lines.

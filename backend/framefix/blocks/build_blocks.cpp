@@ -270,25 +270,6 @@ int hex_defect(const BlockDecomposition& b) {
     return d;
 }
 
-// #V: whether the vertex is in a tet of an invalid block.
-std::vector<char> on_invalid_block(const TetMesh& mesh, const BlockDecomposition& d) {
-    std::vector<char> on(size_t(mesh.num_vertices()), 0);
-    for (const BlockInfo& b : d.blocks)
-        if (!b.valid)
-            for (int t : b.tets)
-                for (int k = 0; k < 4; ++k) on[size_t(mesh.tets(t, k))] = 1;
-    return on;
-}
-
-// Whether a mesh edge of B-rep edge `edge` touches an invalid block: joining an edge between
-// valid blocks only could not make one more valid.
-bool touches_invalid_block(const TetMesh& mesh, const std::vector<char>& on_invalid, int edge) {
-    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
-        if (mesh.edge_tags[e] == edge && (on_invalid[size_t(mesh.feature_edges(e, 0))] || on_invalid[size_t(mesh.feature_edges(e, 1))]))
-            return true;
-    return false;
-}
-
 // Block faces across ambiguous feature curves (docs/algorithms.md#block-faces-across-ambiguous-edges):
 // a chamfer is folded into one of its two neighbouring faces, never both. Greedy, one curve at a
 // time in id order: a curve is joined when the blocks then score better, or as well with fewer
@@ -299,11 +280,8 @@ void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const Fe
     auto better = [](const BlockDecomposition& a, const BlockDecomposition& b) {
         return std::tuple(score(a), -hex_defect(a)) > std::tuple(score(b), -hex_defect(b));
     };
-    std::vector<char> on_invalid;
     for (const EdgeFeature& e : features.edges) {
         if (!ambiguous_edge(e) || out.valid == out.count) continue;
-        if (on_invalid.empty()) on_invalid = on_invalid_block(mesh, out);
-        if (!touches_invalid_block(mesh, on_invalid, e.edge)) continue;
         std::vector<int> joined = out.ignored_imprints;
         joined.insert(joined.end(), out.joined_edges.begin(), out.joined_edges.end());
         joined.push_back(e.edge);
@@ -312,7 +290,7 @@ void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const Fe
         tried.joined_edges.push_back(e.edge);
         Validated w = validate_blocks(mesh, topo, surface_groups(mesh, topo, features, joined, paths), h, options, tried);
         count_conformity(w, h, options, tried);
-        if (better(tried, out)) out = std::move(tried), v = std::move(w), on_invalid.clear();
+        if (better(tried, out)) out = std::move(tried), v = std::move(w);
     }
 }
 
@@ -376,6 +354,62 @@ Validated best_junction_mode(const TetMesh& mesh, const TetTopology& topo, const
     return v;
 }
 
+// What every partition of one build_blocks call shares.
+struct BlockInputs {
+    const TetMesh& mesh;
+    const TetTopology& topo;
+    const FeatureSet& features;
+    const FrameField& field;
+    const TetLocator& locator;
+    const std::vector<SnappedPath>& paths;
+    const std::vector<int>& group;  // surface_groups
+    double h;
+    const BlockOptions& options;
+};
+
+// Sheets from `sources`, partition and validation in each junction mode, rings cut where that
+// helps, ambiguous edges joined: `out`, holding what the tries share, becomes the best blocks.
+Validated blocks_from_sources(const BlockInputs& in, const std::vector<SheetSource>& sources, const Points& singular,
+                              BlockDecomposition& out) {
+    Validated v = best_junction_mode(in.mesh, in.topo, in.field, in.locator, sources, singular, in.group, in.h,
+                                     in.options, out);
+    // Rings (a tube): no sheet above cuts them across; meridian sheets do, then all again, kept
+    // only when the blocks are better (on HexMe's n10o at 0.7 x they were not).
+    TraceOptions trace;
+    trace.step = in.options.step * in.h, trace.stop_distance = in.options.stop_distance * in.h;
+    trace.singular_points = singular;
+    const std::vector<SheetSource> rings = ring_sources(in.mesh, in.field, in.locator, out, v.surface, in.h, trace);
+    if (!rings.empty()) {
+        BlockDecomposition cut = out;
+        const auto t3 = Clock::now();
+        append_sheets(cut.sheets, build_sheets(in.mesh, in.field, in.locator, rings, singular, in.h, in.options, cut.stats));
+        cut.ring_cuts = int(rings.size());
+        cut.seconds_sheets += since(t3);
+        Validated w = partition_best(in.mesh, in.topo, singular, in.group, in.h, in.options, cut);
+        if (score(cut) > score(out)) out = std::move(cut), v = std::move(w);
+    }
+    join_ambiguous_edges(in.mesh, in.topo, in.features, in.paths, in.h, in.options, out, v);
+    return v;
+}
+
+// The curves glued to ambiguous edges as sheet sources too (docs/algorithms.md#sheets-from-glued-curves):
+// the blocks made from `common` with them replace `out` when they score better.
+void try_glued_sources(const BlockInputs& in, const SingularityGraph& graph, const std::vector<SheetSource>& sources,
+                       const Points& singular, const BlockDecomposition& common, BlockDecomposition& out, Validated& v) {
+    std::vector<SheetSource> more = sources;
+    const std::vector<SheetSource> glued = glued_sources(in.mesh, in.field, graph, in.locator, in.h, in.options);
+    more.insert(more.end(), glued.begin(), glued.end());
+    SingularityGraph absorbed;
+    absorbed.curves = graph.absorbed;
+    const Points glued_points = singular_points(absorbed);
+    Points all(singular.rows() + glued_points.rows(), 3);
+    all << singular, glued_points;
+    BlockDecomposition with = common;
+    Validated w = blocks_from_sources(in, more, all, with);
+    with.glued_sources = int(glued.size());
+    if (score(with) > score(out)) out = std::move(with), v = std::move(w);
+}
+
 }  // namespace
 
 BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
@@ -411,23 +445,11 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     // Sheets, partition and validation (lenses join a neighbour and the blocks are validated
     // again), once per junction mode tried; the best blocks are kept.
     const double source_seconds = since(t0);
-    Validated v = best_junction_mode(mesh, topo, field, locator, sources, singular, group, h, options, out);
+    const BlockDecomposition common = out;
+    const BlockInputs in{mesh, topo, features, field, locator, paths, group, h, options};
+    Validated v = blocks_from_sources(in, sources, singular, out);
+    if (options.try_glued && !graph.absorbed.empty()) try_glued_sources(in, graph, sources, singular, common, out, v);
     out.seconds_sheets += source_seconds;
-    // Rings (a tube): no sheet above cuts them across; meridian sheets do, then all again, kept
-    // only when the blocks are better (on HexMe's n10o at 0.7 x they were not).
-    TraceOptions trace;
-    trace.step = options.step * h, trace.stop_distance = options.stop_distance * h, trace.singular_points = singular;
-    const std::vector<SheetSource> rings = ring_sources(mesh, field, locator, out, v.surface, h, trace);
-    if (!rings.empty()) {
-        BlockDecomposition cut = out;
-        const auto t3 = Clock::now();
-        append_sheets(cut.sheets, build_sheets(mesh, field, locator, rings, singular, h, options, cut.stats));
-        cut.ring_cuts = int(rings.size());
-        cut.seconds_sheets += since(t3);
-        Validated w = partition_best(mesh, topo, singular, group, h, options, cut);
-        if (score(cut) > score(out)) out = std::move(cut), v = std::move(w);
-    }
-    join_ambiguous_edges(mesh, topo, features, paths, h, options, out, v);
     out.surfaces = block_surfaces(mesh, v.surface, v.faces);
     out.boundary = std::move(v.surface);
     out.faces = std::move(v.faces);

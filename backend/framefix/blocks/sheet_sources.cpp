@@ -178,6 +178,24 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
     return out;
 }
 
+std::vector<SheetSource> glued_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
+                                       const TetLocator& locator, double h, const BlockOptions& options) {
+    SingularityGraph glued;  // the glued curves, each open one between two boundary nodes of its own
+    glued.curves = graph.absorbed;
+    for (SingularCurve& c : glued.curves)
+        for (int e = 0; e < 2 && !c.closed && c.points.rows() > 0; ++e) {
+            SingularNode n;
+            n.id = int(glued.nodes.size());
+            n.boundary = true;
+            n.position = c.points.row(e == 0 ? 0 : c.points.rows() - 1).transpose();
+            c.ends[e] = n.id;
+            glued.nodes.push_back(n);
+        }
+    std::vector<SheetSource> out = singular_sources(mesh, field, glued, locator, h, options);
+    for (size_t i = 0; i < out.size(); ++i) out[i].name = "glued:" + std::to_string(i);
+    return out;
+}
+
 JunctionEnd junction_end(const SheetSource& source, int f) {
     const std::vector<SheetSeed>& T = source.seeds;
     const int n = int(T.size());

@@ -20,7 +20,7 @@ struct SheetSeed {
 
 struct SheetSource {
     enum Kind { Singular, Concave, Imprinted, Snapped, Ring } kind = Singular;
-    // "singular:<curve id>" | "concave:<B-rep edge>" | "imprinted:<B-rep edge>" | "snapped:<path>" | "ring:<block>"
+    // "singular:<curve id>" | "glued:<index>" | "concave:<B-rep edge>" | "imprinted:<B-rep edge>" | "snapped:<path>" | "ring:<block>"
     std::string name;
     std::vector<SheetSeed> seeds;      // in curve order, about one per h
     bool boundary_end[2] = {false, false};  // source end lies on the boundary: extend the sheet past it
@@ -58,6 +58,12 @@ bool has_straight_junction(const std::vector<SheetSource>& sources);
 // seed_radius h around the curve (valence k gives k zeros; seeds with fewer keep what they find).
 std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
                                           const TetLocator& locator, double h, const BlockOptions& options);
+
+// The curves glued to ambiguous feature curves (SingularityGraph::absorbed) as singular sources
+// with boundary ends, for the blocks that try them (build_blocks): on the anti-pentapyramid the
+// hex layers need them, on the chamfered box they must not be there. Named "glued:<index>".
+std::vector<SheetSource> glued_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
+                                       const TetLocator& locator, double h, const BlockOptions& options);
 
 // Imprinted feature curves (valence 2) that the field follows: at the curve's inner vertices the
 // frame axis closest to the tangent is within kFollowDeg of it on average. A field that ignores an

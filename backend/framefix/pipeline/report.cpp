@@ -191,6 +191,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"flat_edges", b.flat_edges},
             {"ignored_imprints", b.ignored_imprints},
             {"joined_edges", b.joined_edges},
+            {"glued_sources", b.glued_sources},
             {"convex_paths", b.convex_paths},
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},

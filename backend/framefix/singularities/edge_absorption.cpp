@@ -2,6 +2,8 @@
 #include "framefix/singularities/edge_absorption.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 
 #include "framefix/core/segment_distance.h"
 #include "framefix/singularities/node_validity.h"
@@ -12,11 +14,65 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-bool hugs(const SingularCurve& c, const std::vector<std::array<Vec3, 2>>& segments, double radius) {
+// A strip is at most this many glue radii wide (about 3 h): a chamfer whose middle is farther from
+// both its edges than a curve can be glued to one (docs/algorithms.md#curves-along-ambiguous-edges).
+constexpr double kStripWidth = 2.0;
+
+using Segment = std::array<Vec3, 2>;
+using Triangle = std::array<Vec3, 3>;
+
+// Mesh segments of every ambiguous feature curve, by B-rep edge id.
+std::map<int, std::vector<Segment>> ambiguous_segments(const TetMesh& mesh, const FeatureSet& features) {
+    std::map<int, std::vector<Segment>> out;
+    for (int e = 0; e < mesh.feature_edges.rows(); ++e) {
+        const int tag = mesh.edge_tags.size() > e ? mesh.edge_tags(e) : 0;
+        if (tag < 1 || tag > int(features.edges.size()) || !ambiguous_edge(features.edges[size_t(tag - 1)])) continue;
+        out[tag].push_back({Vec3(mesh.points.row(mesh.feature_edges(e, 0))), Vec3(mesh.points.row(mesh.feature_edges(e, 1)))});
+    }
+    return out;
+}
+
+bool near_any(const Vec3& p, const std::vector<Segment>& segments, double radius) {
+    return std::any_of(segments.begin(), segments.end(),
+                       [&](const Segment& s) { return point_segment_distance(p, s[0], s[1]) <= radius; });
+}
+
+// Boundary triangles of the strips: B-rep faces every vertex of which lies within `width` of the
+// face's own ambiguous edges (a chamfer a few h wide). A curve crossing such a strip from one of
+// its edges to the other is as much the edge's as one along it.
+std::vector<Triangle> strip_triangles(const TetMesh& mesh, const FeatureSet& features,
+                                      const std::map<int, std::vector<Segment>>& by_edge, double width) {
+    std::map<int, std::vector<Segment>> face_segments;  // B-rep face -> its ambiguous edges' segments
+    for (const auto& [edge, segments] : by_edge)
+        for (int f : features.edges[size_t(edge - 1)].faces)
+            face_segments[f].insert(face_segments[f].end(), segments.begin(), segments.end());
+    std::map<int, std::vector<Triangle>> by_face;
+    std::map<int, bool> narrow;
+    for (Eigen::Index b = 0; b < mesh.boundary_faces.rows(); ++b) {
+        const int f = mesh.face_tags.size() > b ? mesh.face_tags(b) : 0;
+        const auto it = face_segments.find(f);
+        if (it == face_segments.end()) continue;
+        Triangle t;
+        bool all_near = true;
+        for (int k = 0; k < 3; ++k) {
+            t[size_t(k)] = mesh.points.row(mesh.boundary_faces(b, k)).transpose();
+            all_near = all_near && near_any(t[size_t(k)], it->second, width);
+        }
+        narrow.emplace(f, true).first->second &= all_near;
+        by_face[f].push_back(t);
+    }
+    std::vector<Triangle> out;
+    for (const auto& [f, triangles] : by_face)
+        if (narrow[f]) out.insert(out.end(), triangles.begin(), triangles.end());
+    return out;
+}
+
+bool hugs(const SingularCurve& c, const std::vector<Segment>& segments, const std::vector<Triangle>& strips,
+          double radius) {
     for (int i = 0; i < c.points.rows(); ++i) {
         const Vec3 p = c.points.row(i).transpose();
-        const bool near = std::any_of(segments.begin(), segments.end(), [&](const auto& s) {
-            return point_segment_distance(p, s[0], s[1]) <= radius;
+        const bool near = near_any(p, segments, radius) || std::any_of(strips.begin(), strips.end(), [&](const Triangle& t) {
+            return point_triangle_distance(p, t[0], t[1], t[2]) <= radius;
         });
         if (!near) return false;
     }
@@ -55,15 +111,13 @@ void prune_nodes(SingularityGraph& g) {
 }  // namespace
 
 int absorb_edge_curves(SingularityGraph& g, const TetMesh& mesh, const FeatureSet& features, double radius) {
-    std::vector<std::array<Vec3, 2>> segments;
-    for (int e = 0; e < mesh.feature_edges.rows(); ++e) {
-        const int tag = mesh.edge_tags.size() > e ? mesh.edge_tags(e) : 0;
-        if (tag < 1 || tag > int(features.edges.size()) || !ambiguous_edge(features.edges[size_t(tag - 1)])) continue;
-        segments.push_back({Vec3(mesh.points.row(mesh.feature_edges(e, 0))), Vec3(mesh.points.row(mesh.feature_edges(e, 1)))});
-    }
-    if (segments.empty() || radius <= 0) return 0;
+    const std::map<int, std::vector<Segment>> by_edge = ambiguous_segments(mesh, features);
+    if (by_edge.empty() || radius <= 0) return 0;
+    std::vector<Segment> segments;
+    for (const auto& [edge, s] : by_edge) segments.insert(segments.end(), s.begin(), s.end());
+    const std::vector<Triangle> strips = strip_triangles(mesh, features, by_edge, kStripWidth * radius);
     std::vector<char> glued(g.curves.size(), 0);
-    for (size_t i = 0; i < g.curves.size(); ++i) glued[i] = hugs(g.curves[i], segments, radius);
+    for (size_t i = 0; i < g.curves.size(); ++i) glued[i] = hugs(g.curves[i], segments, strips, radius);
     const int moved = int(std::count(glued.begin(), glued.end(), 1));
     if (moved == 0) return 0;
     std::vector<SingularCurve> kept;

@@ -287,6 +287,44 @@ TEST(BlocksOnSamples, SnappedNotchReportsTheFlatEdgeUnderThePocket) {
     EXPECT_EQ(flat_elsewhere, 0);
 }
 
+// A run up to the correction (snapping where the graph is not meshable), whose blocks are then
+// made with or without the glued curves' sheets.
+RunResult corrected(const std::string& name, double factor) {
+    RunOptions options;
+    options.stop_after = Stage::correction;
+    options.size_factor = factor;
+    return framefix::run(RunInput::file(sample(name)), options);
+}
+
+BlockDecomposition blocks_of(const RunResult& r, bool try_glued) {
+    BlockOptions o;
+    o.try_glued = try_glued;
+    static const std::vector<SnappedPath> no_paths;
+    return build_blocks(r.mesh->tets, r.mesh->topology, r.mesh->features, r.field->frames, *r.singularities,
+                        r.correction ? r.correction->snap.paths : no_paths, o);
+}
+
+TEST(BlocksOnSamples, GluedCurvesEmitSheetsOnlyWhereTheBlocksAreBetter) {
+    // The chamfered box is one hexahedron: the curves glued to its chamfer must not cut it.
+    const RunResult box = corrected("chamfer_box", 1);
+    ASSERT_FALSE(box.singularities->absorbed.empty());
+    ASSERT_TRUE(box.singularities->summary.meshable);
+    const BlockDecomposition one = blocks_of(box, true);
+    EXPECT_EQ(one.glued_sources, 0);
+    EXPECT_EQ(one.count, 1);
+    expect_all_valid(one);
+    // The gusset at 0.8 x, snapped (its two 3-5 curves): its web's 45 and 225 degree edges carry
+    // glued curves, and the blocks with their sheets have more valid blocks than without.
+    const RunResult gusset = corrected("gusset", 0.8);
+    ASSERT_FALSE(gusset.singularities->absorbed.empty());
+    ASSERT_TRUE(gusset.singularities->summary.meshable);
+    const BlockDecomposition with = blocks_of(gusset, true), without = blocks_of(gusset, false);
+    EXPECT_GT(with.glued_sources, 0);
+    EXPECT_EQ(without.glued_sources, 0);
+    EXPECT_GT(2 * with.valid - with.count, 2 * without.valid - without.count);
+    expect_partition(gusset.mesh->tets, gusset.mesh->topology, with);
+}
+
 TEST(BlocksOnSamples, SheetsAreTaggedWithTheirSources) {
     const SampleRun& r = run("notch", 0.05);
     const SheetSoup& s = r.blocks.sheets;
