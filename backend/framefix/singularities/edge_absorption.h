@@ -11,8 +11,9 @@
 namespace framefix {
 
 // Moves every curve whose points all lie within `radius` (model units) of a mesh edge on an
-// ambiguous feature curve from `graph.curves` to `graph.absorbed`, drops the nodes left without a
-// curve, and counts the nodes and summary again. Returns how many curves moved.
+// ambiguous feature curve, or of a strip (a face within 2 radii of its own ambiguous edges: a
+// narrow chamfer), from `graph.curves` to `graph.absorbed`, drops the nodes left without a curve,
+// and counts the nodes and summary again. Returns how many curves moved.
 int absorb_edge_curves(SingularityGraph& graph, const TetMesh& mesh, const FeatureSet& features, double radius);
 
 }  // namespace framefix
