@@ -152,6 +152,21 @@ def test_rounded_box_thin_cushions_get_a_finer_mesh(tmp_path, factor):
         assert abs(h["volume"] - h["part_volume"]) < 0.01 * h["part_volume"]
 
 
+def test_glued_sheets_do_not_keep_the_gusset_from_its_finer_mesh(tmp_path):
+    """The gusset at 1.5 x: the sheets of the curves glued to its web's edges give more valid blocks
+    on the 16k-tet mesh, but thinner ones, whose finer mesh would pass the cap of 6 x. Read from the
+    blocks without those sheets, the thin places fit it, and the finer mesh's blocks are better
+    than either of the first mesh's."""
+    code, _, err = run("blocks", SAMPLES / "gusset.step", "--method", "snap", "--size-factor", "1.5", "--threads", "1",
+                       "--out", tmp_path, "--quiet", timeout=900)
+    assert code == 0, err
+    r = json.loads((tmp_path / "report.json").read_text())
+    t, b = r["blocks"]["thin_refinement"], r["blocks"]
+    assert t["without_glued"] and t["tried"] and t["kept"], t["reason"]
+    assert t["tets_after"] <= 6 * t["tets_before"] and r["mesh"]["tets"] == t["tets_after"]
+    assert 2 * b["valid"] - b["count"] > 2 * t["before"]["valid"] - t["before"]["count"]
+
+
 def test_thin_refinement_can_be_turned_off_and_is_not_tried_when_blocks_are_valid(tmp_path):
     r, _ = thin_blocks(tmp_path / "off", "--size-factor", "0.7", "--no-remesh-thin")
     t = r["blocks"]["thin_refinement"]

@@ -109,6 +109,9 @@ struct ThinRefinement {
     int faces = 0;               // B-rep faces meshed finer
     double min_size = 0;         // their finest edge length, model units
     double thinnest = 0;         // the smallest singular-curve-to-boundary distance, model units
+    // The thin places were read from the blocks made without the glued curves' sheets: with them
+    // the finer mesh would pass its cap (docs/algorithms.md#sheets-from-glued-curves).
+    bool without_glued = false;
     long tets_before = 0, tets_after = 0;
     int count_before = 0, valid_before = 0, pairs_before = 0, conforming_before = 0;
     int count_after = 0, valid_after = 0, pairs_after = 0, conforming_after = 0;

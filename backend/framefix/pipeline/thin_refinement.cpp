@@ -40,8 +40,7 @@ constexpr double kMaxThinTetFactor = 6;
 
 // Whether a point lies in an invalid block or a block with a non-conforming pair: only there do
 // thin blocks need a finer mesh. Outside the mesh: no.
-std::function<bool(const Eigen::Vector3d&)> in_trouble(const RunResult& r, const TetLocator& locator) {
-    const BlockDecomposition& b = *r.blocks;
+std::function<bool(const Eigen::Vector3d&)> in_trouble(const BlockDecomposition& b, const TetLocator& locator) {
     auto trouble = std::make_shared<std::vector<char>>(size_t(b.count), 0);
     for (int k = 0; k < b.count; ++k) (*trouble)[size_t(k)] = !b.blocks[size_t(k)].valid;
     for (const BlockPair& p : b.neighbour_pairs)
@@ -51,6 +50,17 @@ std::function<bool(const Eigen::Vector3d&)> in_trouble(const RunResult& r, const
         const TetLocation where = locator.locate(p);
         return where.tet >= 0 && (*trouble)[size_t((*block)[where.tet])];
     };
+}
+
+// The run's blocks made again without the sheets of the curves glued to ambiguous edges
+// (docs/algorithms.md#sheets-from-glued-curves).
+BlockDecomposition blocks_without_glued(const RunOptions& o, const RunResult& r) {
+    BlockOptions bo = o.blocks;
+    bo.try_glued = false;
+    if (bo.threads == 0) bo.threads = o.threads;
+    static const std::vector<SnappedPath> no_paths;
+    return build_blocks(r.mesh->tets, r.mesh->topology, r.mesh->features, r.field->frames, *r.singularities,
+                        r.correction ? r.correction->snap.paths : no_paths, bo);
 }
 
 }  // namespace
@@ -63,7 +73,15 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     t.reason = thin_blocks_skip(r);
     if (!t.reason.empty()) return t;
     const TetLocator locator(r.mesh->tets, r.mesh->topology);
-    const ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(r, locator));
+    ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(b, locator));
+    if (b.glued_sources > 0 && estimate_thin_tets(r.mesh->tets, thin) > kMaxThinTetFactor * double(t.tets_before)) {
+        // The glued curves' sheets made thinner blocks than the mesh may be refined for; those
+        // without them may fit, and their finer mesh beat these blocks (the gusset at 1.5 x).
+        const BlockDecomposition plain = blocks_without_glued(o, r);
+        ThinFaces other = thin_block_faces(r.mesh->tets, *r.singularities, plain.sheets, plain.h, in_trouble(plain, locator));
+        if (!other.face_size.empty() && estimate_thin_tets(r.mesh->tets, other) <= kMaxThinTetFactor * double(t.tets_before))
+            thin = std::move(other), t.without_glued = true;
+    }
     t.spots = thin.places;
     t.faces = int(thin.face_size.size());
     t.thinnest = thin.thinnest;
