@@ -41,13 +41,15 @@ bool touches_boundary(const ChainContext& c, int t) {
     return false;
 }
 
-// A chain from a node back to the same node that stays within one edge length of where it
-// leaves (or has at most two triangles): a kink of the field around one junction tet or one
-// boundary vertex, not a curve (docs/algorithms.md#chain-ends-and-nodes).
+// A chain from a node back to the same node with at most two triangles, or from a boundary node
+// back to it within one edge length of where it leaves: a kink of the field around one junction
+// tet or one boundary vertex, not a curve (docs/algorithms.md#chain-ends-and-nodes). Longer loops
+// at a junction are judged once joined (drop_junction_loops).
 bool is_junk(const ChainContext& c, const RawChain& ch, double h) {
     const RawEnd &a = ch.ends[0], &b = ch.ends[1];
     if (ch.closed || a.type != b.type || a.group != b.group || a.type == EndType::Dead) return false;
     if (ch.faces.size() <= kJunkFaces) return true;
+    if (a.type == EndType::Junction) return false;
     const Eigen::Vector3d at = end_position(c, a);
     for (int f : ch.faces)
         if ((face_centroid(c.mesh, c.topo, f) - at).norm() > h) return false;

@@ -55,6 +55,11 @@ EndStats resolve_ends(const ChainContext& c, double attach_radius, std::vector<R
 // Drops junk chains, creates one node per referenced group and the raw polylines.
 void assemble(const ChainContext& c, const std::vector<RawChain>& chains, ChainGraph& graph);
 int join_pass_through(ChainGraph& graph);
+// Joins pass-through nodes and drops the loops at a junction that stay within about 2 edge
+// lengths of its tets (docs/algorithms.md#chain-ends-and-nodes), until neither changes the graph;
+// returns how many nodes were joined. The loops are judged on the joined curves, so that a corner
+// of the field that splits a loop does not save it.
+int join_and_drop_loops(ChainGraph& graph, const TetMesh& mesh);
 void renumber(ChainGraph& graph);
 
 }  // namespace framefix::detail

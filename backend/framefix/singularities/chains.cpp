@@ -138,7 +138,7 @@ ChainGraph trace_chains(const TetMesh& mesh, const TetTopology& topo, const std:
     graph.dead_ends = stats.dead_ends;
     graph.dead_ends_attached = stats.attached;
     detail::assemble(c, chains, graph);
-    graph.joined = detail::join_pass_through(graph);
+    graph.joined = detail::join_and_drop_loops(graph, mesh);
     detail::renumber(graph);
     return graph;
 }

@@ -81,8 +81,11 @@ bool hugs(const SingularCurve& c, const std::vector<Segment>& segments, const st
 
 // Drops the nodes no remaining curve ends at, renumbers the rest, and counts their curve ends
 // again. An interior node is judged again by the table; a boundary node keeps its verdict (its
-// check needs the holonomy axes, and a node that stays has kept a curve of its own).
-void prune_nodes(SingularityGraph& g) {
+// check needs the holonomy axes, and a node that stays has kept a curve of its own). A node a
+// glued curve ended at lies within the glue radius of an ambiguous edge: it is a node on that
+// feature curve, which the boundary rule does not check (n08o: the axis curve stops 2 h under
+// the apex, where the glued curves along the five edges met it).
+void prune_nodes(SingularityGraph& g, const std::vector<char>& on_edge) {
     std::vector<int> n3(g.nodes.size(), 0), n5(g.nodes.size(), 0), used(g.nodes.size(), 0);
     for (const SingularCurve& c : g.curves)
         if (!c.closed)
@@ -99,6 +102,7 @@ void prune_nodes(SingularityGraph& g) {
         n.id = new_id[i];
         n.n3 = n3[i];
         n.n5 = n5[i];
+        if (on_edge[i]) n.boundary = n.valid = true;
         if (!n.boundary) n.valid = is_valid_interior_node(n.n3, n.n5);
         kept.push_back(std::move(n));
     }
@@ -121,14 +125,19 @@ int absorb_edge_curves(SingularityGraph& g, const TetMesh& mesh, const FeatureSe
     const int moved = int(std::count(glued.begin(), glued.end(), 1));
     if (moved == 0) return 0;
     std::vector<SingularCurve> kept;
+    std::vector<char> on_edge(g.nodes.size(), 0);
     for (size_t i = 0; i < g.curves.size(); ++i) {
         SingularCurve& c = g.curves[i];
-        if (glued[i]) c.ends[0] = c.ends[1] = -1;
+        if (glued[i])
+            for (int& e : c.ends) {
+                if (e >= 0) on_edge[size_t(e)] = 1;
+                e = -1;
+            }
         (glued[i] ? g.absorbed : kept).push_back(std::move(c));
     }
     g.curves = std::move(kept);
     for (size_t i = 0; i < g.curves.size(); ++i) g.curves[i].id = int(i);
-    prune_nodes(g);
+    prune_nodes(g, on_edge);
     count_summary(g);
     return moved;
 }

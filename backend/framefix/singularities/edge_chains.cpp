@@ -314,7 +314,7 @@ ChainGraph trace_edge_chains(const TetMesh& mesh, const TetTopology& topo, const
     resolve_dead_ends(c, options.attach_distance * graph.h_mean, chains, graph);
     group_boundary_ends(c, chains);
     assemble(c, chains, edge_axis, graph);
-    graph.joined = detail::join_pass_through(graph);
+    graph.joined = detail::join_and_drop_loops(graph, mesh);
     detail::renumber(graph);
     return graph;
 }

@@ -158,6 +158,51 @@ TEST(Chains, ShortChainsBackIntoTheSameJunctionAreJunk) {
     EXPECT_TRUE(c.nodes.empty());
 }
 
+
+// Four rays from kP, plus a 12-gon loop of diameter d out of the junction and back.
+ChainGraph rays_and_loop(double d) {
+    Grid g;
+    for (const Vector3d& r : {Vector3d(1, 0.11, 0.07), Vector3d(-0.13, 1, 0.05), Vector3d(-1, -1.07, 0.09),
+                              Vector3d(0.08, 0.1, -1)})
+        g.segment(kP, kP + 2 * r);
+    const Vector3d u = Vector3d(0.31, 0.12, 0.95).normalized();
+    const Vector3d v = u.cross(Vector3d(-0.28, 0.9, 0.62)).cross(u).normalized();
+    constexpr int kSides = 12;
+    auto at = [&](int k) {
+        const double t = 2 * testing::kPi * k / kSides;
+        return Vector3d(kP + d / 2 * (1 - std::cos(t)) * u + d / 2 * std::sin(t) * v);
+    };
+    for (int k = 0; k < kSides; ++k) g.segment(at(k), at(k + 1));
+    return g.trace();
+}
+
+int junction_loops(const ChainGraph& c) {
+    int n = 0;
+    for (const ChainCurve& curve : c.curves) n += !curve.closed && curve.ends[0] == curve.ends[1];
+    return n;
+}
+
+TEST(Chains, LoopsThatStayCloseToTheirJunctionAreJunk) {
+    // h_mean is 0.21 here. Loops of 1.2 h to 1.7 h: the smaller ones leave and come back directly,
+    // the largest is split by a corner of the polygon into two chains joined again, and is judged
+    // once joined.
+    for (double d : {0.25, 0.3, 0.35}) {
+        const ChainGraph c = rays_and_loop(d);
+        EXPECT_EQ(c.curves.size(), 4u) << d;
+        EXPECT_EQ(junction_loops(c), 0) << d;
+        EXPECT_EQ(interior_nodes(c), 1) << d;
+    }
+}
+
+TEST(Chains, ALoopThatLeavesItsJunctionIsACurve) {
+    for (double d : {0.4, 0.5}) {  // its farthest triangles 2.2 h and 2.6 h from the junction's tets
+        const ChainGraph c = rays_and_loop(d);
+        EXPECT_EQ(c.curves.size(), 5u) << d;
+        EXPECT_EQ(junction_loops(c), 1) << d;
+        EXPECT_EQ(interior_nodes(c), 1) << d;
+    }
+}
+
 TEST(Chains, RejectsLabelsOfTheWrongSize) {
     Grid g;
     g.val.pop_back();
