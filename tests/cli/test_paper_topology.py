@@ -133,12 +133,7 @@ KNOWN = {
     ("groove_narrow.step", "1"): "a 0.1-wide groove: one 3-5 curve where the paper has two",
     ("groove_narrow.step", "1.5"): "a 0.1-wide groove: one 3-5 curve where the paper has two",
 }
-KNOWN.update({
-    ("chamfer_top.step", "0.6"): "two valence-3 curves cross the 5.5 h wide chamfers, wider than a strip",
-})
-UNSTABLE = {
-    "chamfer_top.step": KNOWN[("chamfer_top.step", "0.6")],
-}
+UNSTABLE = {}
 
 
 def test_every_sample_has_an_expectation():

@@ -12,7 +12,8 @@ namespace framefix {
 
 // Moves every curve whose points all lie within `radius` (model units) of a mesh edge on an
 // ambiguous feature curve, or of a strip (a face within 2 radii of its own ambiguous edges: a
-// narrow chamfer), from `graph.curves` to `graph.absorbed`, drops the nodes left without a curve,
+// narrow chamfer), but for stretches that cross a wider face from one of its ambiguous edges to
+// another, from `graph.curves` to `graph.absorbed`, drops the nodes left without a curve,
 // and counts the nodes and summary again. A node a moved curve ended at lies on the feature curve:
 // it becomes a boundary node, unchecked like the nodes on feature curves. Returns how many curves
 // moved.

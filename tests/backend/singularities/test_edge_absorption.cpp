@@ -85,5 +85,54 @@ TEST(EdgeAbsorption, NothingMovesWithoutAnAmbiguousEdge) {
     EXPECT_TRUE(c.g.absorbed.empty());
 }
 
+// Edges 1 (y = 0, z = 0) and 2 (y = 0, z = 1) at 135 degrees, both bounding the face y = 0 (tag
+// 3), which is 1 wide: wider than a strip (2 glue radii).
+AmbiguousEdgeCube chamfer_like() {
+    AmbiguousEdgeCube c;
+    c.fx.features.edges[0] = {1, 2, 135, 135, 1.0, false, "", {3, 5}, {}};
+    c.fx.features.edges[1] = {2, 2, 135, 135, 1.0, false, "", {3, 6}, {}};
+    c.g.nodes.push_back(node({0.02, 0.03, 0.03}, true));
+    c.g.nodes.push_back(node({0.98, 0.03, 0.97}, true));
+    return c;
+}
+
+// Along edge 1 to x = 0.4, over to edge 2 through `via`, along edge 2 from x = 0.6.
+SingularCurve switching_curve(std::initializer_list<Vector3d> via) {
+    std::vector<Vector3d> pts = {{0.02, 0.03, 0.03}, {0.2, 0.03, 0.03}, {0.4, 0.03, 0.03}};
+    pts.insert(pts.end(), via.begin(), via.end());
+    for (const Vector3d& p : {Vector3d(0.6, 0.03, 0.97), Vector3d(0.8, 0.03, 0.97), Vector3d(0.98, 0.03, 0.97)}) pts.push_back(p);
+    SingularCurve c = curve(CurveKind::Valence3, 0, 1, {});
+    c.points.resize(int(pts.size()), 3);
+    for (int i = 0; i < int(pts.size()); ++i) c.points.row(i) = pts[size_t(i)].transpose();
+    return c;
+}
+
+TEST(EdgeAbsorption, ACurveThatCrossesAWideFaceFromOneAmbiguousEdgeToTheOtherIsGlued) {
+    AmbiguousEdgeCube c = chamfer_like();
+    c.g.curves.push_back(switching_curve({{0.45, 0.04, 0.2}, {0.5, 0.05, 0.5}, {0.55, 0.04, 0.8}}));
+    EXPECT_EQ(c.absorb(), 1);
+    EXPECT_TRUE(c.g.curves.empty());
+}
+
+TEST(EdgeAbsorption, ACurveAlongTheMiddleOfAWideFaceIsNotGlued) {
+    AmbiguousEdgeCube c = chamfer_like();
+    // Into the face, along its middle and back: 2.3 long against 0.96 across.
+    c.g.curves.push_back(switching_curve({{0.95, 0.04, 0.45}, {0.05, 0.04, 0.55}}));
+    EXPECT_EQ(c.absorb(), 0);
+}
+
+TEST(EdgeAbsorption, ACurveThatCrossesInsideTheSolidIsNotGlued) {
+    AmbiguousEdgeCube c = chamfer_like();
+    c.g.curves.push_back(switching_curve({{0.45, 0.3, 0.2}, {0.5, 0.4, 0.5}, {0.55, 0.3, 0.8}}));
+    EXPECT_EQ(c.absorb(), 0);
+}
+
+TEST(EdgeAbsorption, ACurveCrossingBetweenEdgesOfNoCommonFaceIsNotGlued) {
+    AmbiguousEdgeCube c = chamfer_like();
+    c.fx.features.edges[1].faces = {4, 6};
+    c.g.curves.push_back(switching_curve({{0.45, 0.04, 0.2}, {0.5, 0.05, 0.5}, {0.55, 0.04, 0.8}}));
+    EXPECT_EQ(c.absorb(), 0);
+}
+
 }  // namespace
 }  // namespace framefix
