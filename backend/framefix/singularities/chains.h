@@ -48,7 +48,7 @@ struct ChainGraph {
     std::vector<ChainCurve> curves;
     std::vector<ChainNode> nodes;     // only nodes with at least one curve end
     double h_mean = 0;                // mean mesh edge length, model units
-    int junk_chains = 0;              // dropped short chains
+    int junk_chains = 0;              // dropped loops: <= 2 triangles, or close to their node
     int dead_ends = 0;                // chain ends in a tet with a single singular face
     int dead_ends_attached = 0;       // of which joined to a junction
     int joined = 0;                   // pass-through nodes removed by joining two curve ends

@@ -69,7 +69,7 @@ struct SingularityGraph {
     int subsampled_edges = 0;            // edges transported through their 1/3, 2/3 samples
     int dead_ends = 0;                   // chain ends in a tet with a single singular face
     int dead_ends_attached = 0;          // of which joined to a junction within attach_distance
-    int junk_chains = 0;                 // dropped: <= 2 triangles from a junction back to it
+    int junk_chains = 0;                 // dropped loops from a node back to it (chains.h, chain_ends.h)
     int joined = 0;                      // pass-through nodes (two curve ends) removed by joining
 };
 
