@@ -36,6 +36,10 @@ struct BlockOptions {
     // Rounds of "a block with at most 3 faces (a lens between two sheets that should be one)
     // joins the neighbour it shares the most boundary with" (0 = off).
     int lens_rounds = 10;
+    // Rounds of "an invalid block of fewer than 6 faces joins a neighbour when the two together
+    // are a hexahedron and the blocks score better" (0 = off; docs/algorithms.md#under-faced-blocks)...
+    int join_rounds = 10;
+    bool share_out = true;         // ... or share it out among its neighbours when no one of them makes a hexahedron
     double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
     // Patches touching <= 3 other patches merge below this area, in h^2: a face of a hexahedron has
     // 4 neighbouring faces, so such a patch is a sliver where four blocks meet along a line.
@@ -164,6 +168,10 @@ struct BlockDecomposition {
     int curtain_corners = 0;
     // Meridian sheets across rings (blocks that were solid tori: a tube), docs/algorithms.md#ring-cuts.
     int ring_cuts = 0;
+    // Under-faced blocks joined to a neighbour (docs/algorithms.md#under-faced-blocks).
+    int joined_blocks = 0;
+    // Under-faced blocks shared out among their neighbours, where no one neighbour made a hexahedron.
+    int shared_out_blocks = 0;
     // Junction nodes (docs/algorithms.md#junction-nodes): each mode tried, in order, with its
     // blocks, and the one kept; empty when the graph has no such node.
     struct JunctionTry {

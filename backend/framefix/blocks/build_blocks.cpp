@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -81,10 +82,57 @@ struct Validated {
     std::vector<std::map<int, int>> shared;      // per block: neighbour -> shared triangles
 };
 
-// Each block's boundary triangles (labelled by neighbour block or surface group), validated as
-// a hexahedron; fills out.blocks.
-Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
-                          const BlockOptions& options, BlockDecomposition& out) {
+// An earlier validation of the same mesh whose blocks' results can be reused: `old_of_new` maps
+// each block to its earlier id (-1: none), `new_of_old` the other way.
+struct EarlierBlocks {
+    const BlockDecomposition& blocks;
+    const Validated& validated;
+    std::vector<int> old_of_new, new_of_old;
+};
+
+int relabelled(int label, const std::vector<int>& new_of_old) { return label >= 0 ? new_of_old[label] : label; }
+
+// Whether block b's boundary is the earlier block's, labels mapped to the new ids.
+bool same_boundary(const std::vector<BoundaryTriangle>& now, const EarlierBlocks& e, int b) {
+    const int o = e.old_of_new[b];
+    if (o < 0 || e.validated.surface[o].size() != now.size()) return false;
+    const auto& then = e.validated.surface[o];
+    for (size_t i = 0; i < now.size(); ++i)
+        if (now[i].verts != then[i].verts || now[i].label != relabelled(then[i].label, e.new_of_old)) return false;
+    return true;
+}
+
+// The earlier block's validation, its labels mapped to the new ids.
+void reuse_validation(const EarlierBlocks& e, int b, BlockFaces& faces, BlockInfo& info) {
+    const int o = e.old_of_new[b];
+    faces = e.validated.faces[o];
+    for (int& l : faces.label) l = relabelled(l, e.new_of_old);
+    for (int& l : faces.cleaned) l = relabelled(l, e.new_of_old);
+    const BlockInfo& then = e.blocks.blocks[o];
+    info.valid = then.valid, info.faces = then.faces, info.edges = then.edges, info.corners = then.corners;
+    info.euler = then.euler, info.manifold = then.manifold, info.flat_edges = then.flat_edges;
+    info.flat_corners = then.flat_corners, info.reason = then.reason, info.centroid = then.centroid;
+}
+
+// Each block's boundary triangles (labelled by neighbour block or surface group), triangles
+// shared with each neighbour, tets and volume; the rest of out.blocks is reset.
+// Face f of tet t on its block's boundary, labelled with the block across (`other`) or, on the
+// part's boundary (-1), its surface group; the normal points out of tet t.
+BoundaryTriangle boundary_triangle(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, int f,
+                                   int t, int other) {
+    BoundaryTriangle tri;
+    tri.verts = topo.faces.row(f).transpose();
+    tri.label = other >= 0 ? other : -1 - group[f];
+    const Eigen::Vector3d p0 = mesh.points.row(tri.verts[0]).transpose();
+    tri.normal = (mesh.points.row(tri.verts[1]).transpose() - p0).cross(mesh.points.row(tri.verts[2]).transpose() - p0);
+    Eigen::Vector3d inner = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) inner += mesh.points.row(mesh.tets(t, k)).transpose() / 4;
+    if (tri.normal.dot(p0 - inner) < 0) tri.normal = -tri.normal;
+    return tri;
+}
+
+Validated collect_boundaries(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group,
+                             BlockDecomposition& out) {
     out.blocks.assign(out.count, BlockInfo{});
     Validated v;
     v.shared.assign(out.count, {});
@@ -97,15 +145,7 @@ Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const st
         for (int side = 0; side < 2; ++side) {
             const int t = side == 0 ? ta : tb, b = side == 0 ? la : lb, other = side == 0 ? lb : la;
             if (b < 0) continue;
-            BoundaryTriangle tri;
-            tri.verts = topo.faces.row(f).transpose();
-            tri.label = other >= 0 ? other : -1 - group[f];
-            const Eigen::Vector3d p0 = mesh.points.row(tri.verts[0]).transpose();
-            tri.normal = (mesh.points.row(tri.verts[1]).transpose() - p0).cross(mesh.points.row(tri.verts[2]).transpose() - p0);
-            Eigen::Vector3d inner = Eigen::Vector3d::Zero();
-            for (int k = 0; k < 4; ++k) inner += mesh.points.row(mesh.tets(t, k)).transpose() / 4;
-            if (tri.normal.dot(p0 - inner) < 0) tri.normal = -tri.normal;
-            surface[b].push_back(tri);
+            surface[b].push_back(boundary_triangle(mesh, topo, group, f, t, other));
             if (other >= 0) v.shared[b][other] += 1;
         }
     }
@@ -114,12 +154,24 @@ Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const st
         info.tets.push_back(t);
         info.volume += tet_volume(mesh, t);
     }
+    return v;
+}
+
+// Each collected block validated as a hexahedron; fills out.blocks. Blocks whose boundary is
+// unchanged since `earlier` keep its results.
+void validate_collected(const TetMesh& mesh, double h, const BlockOptions& options, BlockDecomposition& out,
+                        Validated& v, const EarlierBlocks* earlier = nullptr) {
+    const auto& surface = v.surface;
     v.faces.resize(out.count);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads > 0 ? options.threads : omp_get_max_threads())
     for (int b = 0; b < out.count; ++b) {
         BlockInfo& info = out.blocks[b];
-        v.faces[b] = validate_block(mesh, surface[b], h, options, info);
         for (auto [o, n] : v.shared[b]) info.neighbours.push_back(o);
+        if (earlier && same_boundary(surface[b], *earlier, b)) {
+            reuse_validation(*earlier, b, v.faces[b], info);
+            continue;
+        }
+        v.faces[b] = validate_block(mesh, surface[b], h, options, info);
         std::set<int> verts;
         for (int t : info.tets) for (int k = 0; k < 4; ++k) verts.insert(mesh.tets(t, k));
         for (int v : verts) info.centroid += mesh.points.row(v).transpose() / double(verts.size());
@@ -129,6 +181,12 @@ Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const st
     const std::vector<std::vector<int>> one_sided = one_sided_contacts(v.faces, v.shared);
     for (int b = 0; b < out.count; ++b)
         if (!one_sided[b].empty()) v.faces[b] = validate_block(mesh, v.surface[b], h, options, out.blocks[b], one_sided[b]);
+}
+
+Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                          const BlockOptions& options, BlockDecomposition& out) {
+    Validated v = collect_boundaries(mesh, topo, group, out);
+    validate_collected(mesh, h, options, out, v);
     return v;
 }
 
@@ -262,6 +320,16 @@ Validated partition_best(const TetMesh& mesh, const TetTopology& topo, const Poi
     return v;
 }
 
+// The surface groups across the ignored imprints, the ambiguous edges the blocks joined and `more`.
+std::vector<int> joined_groups(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                               const std::vector<SnappedPath>& paths, const BlockDecomposition& out, int more = -1) {
+    std::vector<int> joined = out.ignored_imprints;
+    joined.insert(joined.end(), out.joined_edges.begin(), out.joined_edges.end());
+    if (more >= 0) joined.push_back(more);
+    std::sort(joined.begin(), joined.end());
+    return surface_groups(mesh, topo, features, joined, paths);
+}
+
 // How far the invalid blocks are from a hexahedron: faces, edges and corners off 6, 12 and 8.
 int hex_defect(const BlockDecomposition& b) {
     int d = 0;
@@ -282,15 +350,170 @@ void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const Fe
     };
     for (const EdgeFeature& e : features.edges) {
         if (!ambiguous_edge(e) || out.valid == out.count) continue;
-        std::vector<int> joined = out.ignored_imprints;
-        joined.insert(joined.end(), out.joined_edges.begin(), out.joined_edges.end());
-        joined.push_back(e.edge);
-        std::sort(joined.begin(), joined.end());
         BlockDecomposition tried = out;
         tried.joined_edges.push_back(e.edge);
-        Validated w = validate_blocks(mesh, topo, surface_groups(mesh, topo, features, joined, paths), h, options, tried);
+        Validated w = validate_blocks(mesh, topo, joined_groups(mesh, topo, features, paths, out, e.edge), h, options, tried);
         count_conformity(w, h, options, tried);
         if (better(tried, out)) out = std::move(tried), v = std::move(w);
+    }
+}
+
+// Invalid blocks of fewer than 6 faces, smallest first: wedges and slivers a sheet cut off a
+// block (no hexahedron has fewer faces).
+std::vector<int> under_faced_blocks(const BlockDecomposition& out) {
+    std::vector<int> under;
+    for (int b = 0; b < out.count; ++b)
+        if (!out.blocks[b].valid && out.blocks[b].faces < 6 && !out.blocks[b].neighbours.empty()) under.push_back(b);
+    std::sort(under.begin(), under.end(), [&](int a, int b) { return out.blocks[a].volume < out.blocks[b].volume; });
+    return under;
+}
+
+int tet_across(const TetTopology& topo, int f, int t) {
+    return topo.face_tets(f, 0) == t ? topo.face_tets(f, 1) : topo.face_tets(f, 0);
+}
+
+// Whether blocks `from` and `into` together, before any staircase cleaning, have a manifold
+// sphere boundary of fewer than 6 faces: the cleaning moves a few tets where a boundary is not a
+// manifold and adds no face, so the join is not worth its cost (several times this check's).
+bool hopeless_join(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                   const BlockOptions& options, const BlockDecomposition& out, int from, int into) {
+    auto inside = [&](int t) { return t >= 0 && (out.tet_block[t] == from || out.tet_block[t] == into); };
+    std::vector<std::pair<int, int>> faces;  // (face, tet inside), in face order as collect_boundaries lists them
+    for (int b : {from, into})
+        for (int t : out.blocks[b].tets)
+            for (int k = 0; k < 4; ++k)
+                if (!inside(tet_across(topo, topo.tet_faces(t, k), t))) faces.push_back({topo.tet_faces(t, k), t});
+    std::sort(faces.begin(), faces.end());
+    std::vector<BoundaryTriangle> surface;
+    for (auto [f, t] : faces) {
+        const int across = tet_across(topo, f, t);
+        surface.push_back(boundary_triangle(mesh, topo, group, f, t, across >= 0 ? out.tet_block[across] : -1));
+    }
+    BlockInfo joined;
+    validate_block(mesh, surface, h, options, joined);
+    return !joined.valid && joined.manifold && joined.euler == 2 && joined.faces < 6;
+}
+
+// Block ids of `out` and of `tried` (out with `from` joined to `into`) mapped both ways; the
+// joined block has no earlier counterpart.
+EarlierBlocks map_earlier(const BlockDecomposition& out, const Validated& v, const BlockDecomposition& tried, int from,
+                          int into) {
+    EarlierBlocks earlier{out, v, std::vector<int>(tried.count, -1), std::vector<int>(out.count, -1)};
+    for (int b = 0; b < out.count; ++b) {
+        const int n = tried.tet_block[out.blocks[b].tets.front()];
+        earlier.new_of_old[b] = n;
+        if (b != from && b != into) earlier.old_of_new[n] = b;
+    }
+    return earlier;
+}
+
+// The blocks of `from` and its neighbours, flagged: where moving `from`'s tets can change a staircase.
+std::vector<char> near_blocks(const BlockDecomposition& out, int from) {
+    std::vector<char> near(out.count, 0);
+    near[from] = 1;
+    for (int n : out.blocks[from].neighbours) near[n] = 1;
+    return near;
+}
+
+// `out` relabelled as `labels` (block `from` moved into its neighbours), cleaned where `near`
+// flags and validated again; none when `into` >= 0 and the block holding its tets is no hexahedron.
+std::optional<std::pair<BlockDecomposition, Validated>> relabelled_blocks(
+    const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h, const BlockOptions& options,
+    const BlockDecomposition& out, const Validated& v, Eigen::VectorXi labels, const std::vector<char>& near, int from,
+    int into) {
+    BlockDecomposition tried = out;
+    tried.tet_block = clean_staircase(mesh, topo, std::move(labels), near);
+    tried.count = compact_labels(tried.tet_block);
+    const int m = into >= 0 ? tried.tet_block[out.blocks[into].tets.front()] : -1;
+    Validated w = collect_boundaries(mesh, topo, group, tried);
+    if (m >= 0) {
+        BlockInfo joined;
+        validate_block(mesh, w.surface[m], h, options, joined);
+        if (!joined.valid && joined.faces < 6) return std::nullopt;  // dissolving contacts only removes faces
+    }
+    const EarlierBlocks earlier = map_earlier(out, v, tried, from, into);  // the others keep their results
+    validate_collected(mesh, h, options, tried, w, &earlier);
+    if (m >= 0 && !tried.blocks[m].valid) return std::nullopt;
+    count_conformity(w, h, options, tried);
+    return std::pair{std::move(tried), std::move(w)};
+}
+
+// `out` with block `from` joined to block `into`; none when the joined block is no hexahedron.
+std::optional<std::pair<BlockDecomposition, Validated>> joined_blocks(const TetMesh& mesh, const TetTopology& topo,
+                                                       const std::vector<int>& group, double h,
+                                                       const BlockOptions& options, const BlockDecomposition& out,
+                                                       const Validated& v, int from, int into) {
+    if (hopeless_join(mesh, topo, group, h, options, out, from, into)) return std::nullopt;
+    Eigen::VectorXi labels = out.tet_block;
+    for (int t : out.blocks[from].tets) labels[t] = into;
+    std::vector<char> near = near_blocks(out, from);
+    for (int n : out.blocks[into].neighbours) near[n] = 1;
+    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near, from, into);
+}
+
+// `out` with block `from` shared out among its neighbours: each tet goes to the neighbour
+// reached first from it through `from` (breadth first from the faces `from` shares with them).
+std::optional<std::pair<BlockDecomposition, Validated>> shared_out_blocks(const TetMesh& mesh, const TetTopology& topo,
+                                                           const std::vector<int>& group, double h,
+                                                           const BlockOptions& options, const BlockDecomposition& out,
+                                                           const Validated& v, int from) {
+    Eigen::VectorXi labels = out.tet_block;
+    for (int t : out.blocks[from].tets) labels[t] = -1;
+    std::vector<int> frontier;
+    for (int t : out.blocks[from].tets)
+        for (int k = 0; k < 4; ++k) {
+            const int n = tet_across(topo, topo.tet_faces(t, k), t);
+            if (n >= 0 && out.tet_block[n] != from && labels[t] < 0) labels[t] = out.tet_block[n], frontier.push_back(t);
+        }
+    for (size_t i = 0; i < frontier.size(); ++i)
+        for (int k = 0; k < 4; ++k) {
+            const int n = tet_across(topo, topo.tet_faces(frontier[i], k), frontier[i]);
+            if (n >= 0 && labels[n] < 0) labels[n] = labels[frontier[i]], frontier.push_back(n);
+        }
+    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near_blocks(out, from), from, -1);
+}
+
+// A pair of blocks named by their first tets and sizes (-1, -1 for no second block), so that a
+// try that failed is not repeated while the blocks stay as they were.
+using BlockPairName = std::tuple<int, int, int, int>;
+BlockPairName pair_name(const BlockDecomposition& out, int b, int o) {
+    return {out.blocks[b].tets.front(), int(out.blocks[b].tets.size()), o >= 0 ? out.blocks[o].tets.front() : -1,
+            o >= 0 ? int(out.blocks[o].tets.size()) : -1};
+}
+
+// One join or share-out of an under-faced block that gives better blocks, into `out`: joins to
+// a single neighbour first, over every such block, then share-outs. False if none does.
+bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+              const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlockPairName>& failed) {
+    auto keep = [&](auto tried, const BlockPairName& name, int& count) {
+        if (!tried || !(score(tried->first) > score(out))) {
+            failed.insert(name);
+            return false;
+        }
+        out = std::move(tried->first), v = std::move(tried->second), ++count;
+        return true;
+    };
+    const std::vector<int> under = under_faced_blocks(out);
+    for (int b : under)
+        for (int o : out.blocks[b].neighbours)
+            if (!failed.count(pair_name(out, b, o)) &&
+                keep(joined_blocks(mesh, topo, group, h, options, out, v, b, o), pair_name(out, b, o), out.joined_blocks))
+                return true;
+    for (int b : under)
+        if (options.share_out && !failed.count(pair_name(out, b, -1)) &&
+            keep(shared_out_blocks(mesh, topo, group, h, options, out, v, b), pair_name(out, b, -1), out.shared_out_blocks))
+            return true;
+    return false;
+}
+
+// Under-faced blocks join a neighbour, or are shared out among them
+// (docs/algorithms.md#under-faced-blocks), when the blocks score better. Greedy, one per round.
+void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                      const std::vector<SnappedPath>& paths, double h, const BlockOptions& options,
+                      BlockDecomposition& out, Validated& v) {
+    const std::vector<int> group = joined_groups(mesh, topo, features, paths, out);
+    std::set<BlockPairName> failed;
+    for (int round = 0; round < options.join_rounds && join_one(mesh, topo, group, h, options, out, v, failed); ++round) {
     }
 }
 
@@ -389,6 +612,7 @@ Validated blocks_from_sources(const BlockInputs& in, const std::vector<SheetSour
         if (score(cut) > score(out)) out = std::move(cut), v = std::move(w);
     }
     join_ambiguous_edges(in.mesh, in.topo, in.features, in.paths, in.h, in.options, out, v);
+    join_under_faced(in.mesh, in.topo, in.features, in.paths, in.h, in.options, out, v);
     return v;
 }
 

@@ -33,7 +33,10 @@ int small_piece_tets(int num_tets, const BlockOptions& options);
 
 // Rule 7: moves the minority side at non-manifold block-boundary edges and pinched vertices until
 // every block boundary is a manifold (<= 10 passes each). Returns relabelled, compacted labels.
-Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi labels);
+// With `only` (#labels flags), only the flagged blocks' boundaries are mended: a block just
+// joined to another, and its neighbours.
+Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi labels,
+                                const std::vector<char>& only = {});
 
 // Relabels to 0..n-1 in order of first appearance; returns n.
 int compact_labels(Eigen::VectorXi& labels);

@@ -37,23 +37,25 @@ bool move_minority(const std::vector<int>& ring, int b, Eigen::VectorXi& lab) {
 }
 
 // Block-boundary faces as (face, block on this side): both sides of faces between two blocks,
-// the inner side of domain-boundary faces.
-template <class F> void for_each_block_face(const TetTopology& topo, const Eigen::VectorXi& lab, F&& f) {
+// the inner side of domain-boundary faces; only the sides of the blocks `only` flags, when given.
+template <class F>
+void for_each_block_face(const TetTopology& topo, const Eigen::VectorXi& lab, const std::vector<char>& only, F&& f) {
+    auto wanted = [&](int l) { return l >= 0 && (only.empty() || (l < int(only.size()) && only[l])); };
     for (int face = 0; face < int(topo.faces.rows()); ++face) {
         const int t0 = topo.face_tets(face, 0), t1 = topo.face_tets(face, 1);
         const int l0 = t0 >= 0 ? lab[t0] : -1, l1 = t1 >= 0 ? lab[t1] : -1;
         if (l0 == l1) continue;
-        if (l0 >= 0) f(face, l0);
-        if (l1 >= 0) f(face, l1);
+        if (wanted(l0)) f(face, l0);
+        if (wanted(l1)) f(face, l1);
     }
 }
 
 // One pass: (edge, block) pairs with >= 4 boundary faces of that block (two fans of the block
 // touching along the edge). Sorting keys is several times faster than hashing them.
-int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab) {
+int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab, const std::vector<char>& only) {
     const std::uint64_t nv = mesh.num_vertices();
     std::vector<std::pair<PairKey, int>> entries;  // (edge key, block), sorted: (edge, block) order
-    for_each_block_face(topo, lab, [&](int f, int b) {
+    for_each_block_face(topo, lab, only, [&](int f, int b) {
         for (int k = 0; k < 3; ++k) {
             entries.push_back({edge_key(topo.faces(f, k), topo.faces(f, (k + 1) % 3), nv), b});
         }
@@ -76,11 +78,11 @@ int fix_edges(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi& lab
 }
 
 // One pass: (vertex, block) whose link in the block's boundary triangles has >= 2 components.
-int fix_vertices(const TetTopology& topo, Eigen::VectorXi& lab) {
+int fix_vertices(const TetTopology& topo, Eigen::VectorXi& lab, const std::vector<char>& only) {
     struct Link { PairKey vert_block; int a, c; bool operator<(const Link& o) const { return vert_block < o.vert_block; } };
     const std::uint64_t nb = lab.maxCoeff() + 1;
     std::vector<Link> links;
-    for_each_block_face(topo, lab, [&](int f, int b) {
+    for_each_block_face(topo, lab, only, [&](int f, int b) {
         for (int k = 0; k < 3; ++k)
             links.push_back({pair_key(topo.faces(f, k), b, nb), topo.faces(f, (k + 1) % 3), topo.faces(f, (k + 2) % 3)});
     });
@@ -112,12 +114,15 @@ int fix_vertices(const TetTopology& topo, Eigen::VectorXi& lab) {
 
 }  // namespace
 
-Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi lab) {
+Eigen::VectorXi clean_staircase(const TetMesh& mesh, const TetTopology& topo, Eigen::VectorXi lab,
+                                const std::vector<char>& only) {
     // Fixing an edge can pinch a vertex and the other way round: alternate until both are clean.
+    // With `only`, the labels keep their ids until the end, so that `only` names the same blocks.
+    auto compact = [&] { if (only.empty()) compact_labels(lab); };
     for (int round = 0; round < 4; ++round) {
         int moved = 0;
-        for (int pass = 0, m = 1; pass < 10 && m > 0; ++pass) moved += m = fix_edges(mesh, topo, lab), compact_labels(lab);
-        for (int pass = 0, m = 1; pass < 6 && m > 0; ++pass) moved += m = fix_vertices(topo, lab), compact_labels(lab);
+        for (int pass = 0, m = 1; pass < 10 && m > 0; ++pass) moved += m = fix_edges(mesh, topo, lab, only), compact();
+        for (int pass = 0, m = 1; pass < 6 && m > 0; ++pass) moved += m = fix_vertices(topo, lab, only), compact();
         if (moved == 0) break;
     }
     compact_labels(lab);

@@ -195,6 +195,8 @@ json blocks_json(const BlockDecomposition& b) {
             {"convex_paths", b.convex_paths},
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},
+            {"joined_blocks", b.joined_blocks},
+            {"shared_out_blocks", b.shared_out_blocks},
             {"junction_tries", junction_tries},
             {"junction_mode", b.junction_mode},
             {"blocks", blocks},

@@ -296,9 +296,12 @@ RunResult corrected(const std::string& name, double factor) {
     return framefix::run(RunInput::file(sample(name)), options);
 }
 
-BlockDecomposition blocks_of(const RunResult& r, bool try_glued) {
+BlockDecomposition blocks_of(const RunResult& r, bool try_glued, int join_rounds = BlockOptions{}.join_rounds,
+                             bool share_out = true) {
     BlockOptions o;
     o.try_glued = try_glued;
+    o.join_rounds = join_rounds;
+    o.share_out = share_out;
     static const std::vector<SnappedPath> no_paths;
     return build_blocks(r.mesh->tets, r.mesh->topology, r.mesh->features, r.field->frames, *r.singularities,
                         r.correction ? r.correction->snap.paths : no_paths, o);
@@ -323,6 +326,39 @@ TEST(BlocksOnSamples, GluedCurvesEmitSheetsOnlyWhereTheBlocksAreBetter) {
     EXPECT_EQ(without.glued_sources, 0);
     EXPECT_GT(2 * with.valid - with.count, 2 * without.valid - without.count);
     expect_partition(gusset.mesh->tets, gusset.mesh->topology, with);
+}
+
+int under_faced(const BlockDecomposition& d) {
+    int n = 0;
+    for (const BlockInfo& b : d.blocks) n += !b.valid && b.faces < 6;
+    return n;
+}
+
+TEST(BlocksOnSamples, WedgesCutOffABlockJoinTheNeighbourTheyMakeAHexahedronWith) {
+    // The wide groove with every curve filleted: its sheets cut wedges of 4 and 5 faces off
+    // blocks next to the fillets; joined to a neighbour, each makes a hexahedron.
+    const RunResult r = corrected("groove_wide_filleted", 1);
+    const BlockDecomposition joined = blocks_of(r, true), apart = blocks_of(r, true, 0);
+    EXPECT_EQ(apart.joined_blocks, 0);
+    ASSERT_GT(joined.joined_blocks, 0);
+    EXPECT_LT(under_faced(joined), under_faced(apart));
+    EXPECT_LT(joined.count, apart.count);
+    EXPECT_GE(joined.valid, apart.valid);  // each join makes a hexahedron: no valid block is lost
+    EXPECT_GT(2 * joined.valid - joined.count, 2 * apart.valid - apart.count);
+    expect_partition(r.mesh->tets, r.mesh->topology, joined);
+}
+
+TEST(BlocksOnSamples, AWedgeNoNeighbourMakesAHexahedronWithIsSharedOutAmongThem) {
+    // The narrow groove, snapped: after its wedges joined what they could, one is left that
+    // no single neighbour makes a hexahedron with; shared out among them, the blocks are better.
+    const RunResult r = corrected("groove_narrow", 1);
+    const BlockDecomposition shared = blocks_of(r, true), kept = blocks_of(r, true, BlockOptions{}.join_rounds, false);
+    EXPECT_EQ(kept.shared_out_blocks, 0);
+    ASSERT_GT(shared.shared_out_blocks, 0);
+    EXPECT_GT(shared.joined_blocks, 0);
+    EXPECT_LT(under_faced(shared), under_faced(kept));
+    EXPECT_GT(2 * shared.valid - shared.count, 2 * kept.valid - kept.count);
+    expect_partition(r.mesh->tets, r.mesh->topology, shared);
 }
 
 TEST(BlocksOnSamples, SheetsAreTaggedWithTheirSources) {
