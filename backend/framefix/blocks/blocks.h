@@ -37,9 +37,8 @@ struct BlockOptions {
     // joins the neighbour it shares the most boundary with" (0 = off).
     int lens_rounds = 10;
     // Rounds of "an invalid block of fewer than 6 faces joins a neighbour when the two together
-    // are a hexahedron and the blocks score better" (0 = off; docs/algorithms.md#under-faced-blocks)...
+    // are a hexahedron and the blocks score better" (0 = off; docs/algorithms.md#under-faced-blocks).
     int join_rounds = 10;
-    bool share_out = true;         // ... or share it out among its neighbours when no one of them makes a hexahedron
     double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
     // Patches touching <= 3 other patches merge below this area, in h^2: a face of a hexahedron has
     // 4 neighbouring faces, so such a patch is a sliver where four blocks meet along a line.
@@ -170,8 +169,10 @@ struct BlockDecomposition {
     int ring_cuts = 0;
     // Under-faced blocks joined to a neighbour (docs/algorithms.md#under-faced-blocks).
     int joined_blocks = 0;
-    // Under-faced blocks shared out among their neighbours, where no one neighbour made a hexahedron.
-    int shared_out_blocks = 0;
+    // Per tet: whether it lay in an invalid block or a block of a non-conforming pair before any
+    // under-faced block was joined; empty when none was. The thin-block refinement
+    // reads its thin places there: a wedge joined away is still where the mesh was too coarse.
+    std::vector<char> trouble_before_joins;
     // Junction nodes (docs/algorithms.md#junction-nodes): each mode tried, in order, with its
     // blocks, and the one kept; empty when the graph has no such node.
     struct JunctionTry {
@@ -184,6 +185,9 @@ struct BlockDecomposition {
     double seconds = 0;            // total wall clock
     double seconds_sheets = 0, seconds_partition = 0, seconds_validation = 0;
 };
+
+// Per tet: whether its block is invalid or in a non-conforming pair.
+std::vector<char> tets_in_trouble(const BlockDecomposition& blocks);
 
 // Throws framefix::Error("blocks") when the field or graph does not belong to the mesh.
 BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,

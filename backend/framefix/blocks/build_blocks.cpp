@@ -415,8 +415,8 @@ std::vector<char> near_blocks(const BlockDecomposition& out, int from) {
     return near;
 }
 
-// `out` relabelled as `labels` (block `from` moved into its neighbours), cleaned where `near`
-// flags and validated again; none when `into` >= 0 and the block holding its tets is no hexahedron.
+// `out` relabelled as `labels` (block `from` moved into a neighbour), cleaned where `near`
+// flags and validated again; none when a block that took its tets is no hexahedron.
 std::optional<std::pair<BlockDecomposition, Validated>> relabelled_blocks(
     const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h, const BlockOptions& options,
     const BlockDecomposition& out, const Validated& v, Eigen::VectorXi labels, const std::vector<char>& near, int from,
@@ -433,7 +433,10 @@ std::optional<std::pair<BlockDecomposition, Validated>> relabelled_blocks(
     }
     const EarlierBlocks earlier = map_earlier(out, v, tried, from, into);  // the others keep their results
     validate_collected(mesh, h, options, tried, w, &earlier);
-    if (m >= 0 && !tried.blocks[m].valid) return std::nullopt;
+    // Every block that took `from`'s tets must be a hexahedron: merging an invalid block into
+    // another invalid one would score better and help nobody (a ring's pieces back into a ring).
+    for (int t : out.blocks[from].tets)
+        if (!tried.blocks[tried.tet_block[t]].valid) return std::nullopt;
     count_conformity(w, h, options, tried);
     return std::pair{std::move(tried), std::move(w)};
 }
@@ -451,70 +454,43 @@ std::optional<std::pair<BlockDecomposition, Validated>> joined_blocks(const TetM
     return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near, from, into);
 }
 
-// `out` with block `from` shared out among its neighbours: each tet goes to the neighbour
-// reached first from it through `from` (breadth first from the faces `from` shares with them).
-std::optional<std::pair<BlockDecomposition, Validated>> shared_out_blocks(const TetMesh& mesh, const TetTopology& topo,
-                                                           const std::vector<int>& group, double h,
-                                                           const BlockOptions& options, const BlockDecomposition& out,
-                                                           const Validated& v, int from) {
-    Eigen::VectorXi labels = out.tet_block;
-    for (int t : out.blocks[from].tets) labels[t] = -1;
-    std::vector<int> frontier;
-    for (int t : out.blocks[from].tets)
-        for (int k = 0; k < 4; ++k) {
-            const int n = tet_across(topo, topo.tet_faces(t, k), t);
-            if (n >= 0 && out.tet_block[n] != from && labels[t] < 0) labels[t] = out.tet_block[n], frontier.push_back(t);
-        }
-    for (size_t i = 0; i < frontier.size(); ++i)
-        for (int k = 0; k < 4; ++k) {
-            const int n = tet_across(topo, topo.tet_faces(frontier[i], k), frontier[i]);
-            if (n >= 0 && labels[n] < 0) labels[n] = labels[frontier[i]], frontier.push_back(n);
-        }
-    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near_blocks(out, from), from, -1);
-}
-
-// A pair of blocks named by their first tets and sizes (-1, -1 for no second block), so that a
-// try that failed is not repeated while the blocks stay as they were.
+// A pair of blocks named by their first tets and sizes, so that a try that failed is not
+// repeated while both blocks stay as they were.
 using BlockPairName = std::tuple<int, int, int, int>;
 BlockPairName pair_name(const BlockDecomposition& out, int b, int o) {
-    return {out.blocks[b].tets.front(), int(out.blocks[b].tets.size()), o >= 0 ? out.blocks[o].tets.front() : -1,
-            o >= 0 ? int(out.blocks[o].tets.size()) : -1};
+    return {out.blocks[b].tets.front(), int(out.blocks[b].tets.size()), out.blocks[o].tets.front(),
+            int(out.blocks[o].tets.size())};
 }
 
-// One join or share-out of an under-faced block that gives better blocks, into `out`: joins to
-// a single neighbour first, over every such block, then share-outs. False if none does.
+// One join of an under-faced block to a neighbour that gives better blocks, into `out`. False if none does.
 bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
               const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlockPairName>& failed) {
-    auto keep = [&](auto tried, const BlockPairName& name, int& count) {
-        if (!tried || !(score(tried->first) > score(out))) {
-            failed.insert(name);
-            return false;
-        }
-        out = std::move(tried->first), v = std::move(tried->second), ++count;
-        return true;
-    };
-    const std::vector<int> under = under_faced_blocks(out);
-    for (int b : under)
-        for (int o : out.blocks[b].neighbours)
-            if (!failed.count(pair_name(out, b, o)) &&
-                keep(joined_blocks(mesh, topo, group, h, options, out, v, b, o), pair_name(out, b, o), out.joined_blocks))
-                return true;
-    for (int b : under)
-        if (options.share_out && !failed.count(pair_name(out, b, -1)) &&
-            keep(shared_out_blocks(mesh, topo, group, h, options, out, v, b), pair_name(out, b, -1), out.shared_out_blocks))
+    for (int b : under_faced_blocks(out))
+        for (int o : out.blocks[b].neighbours) {
+            const BlockPairName name = pair_name(out, b, o);
+            if (failed.count(name)) continue;
+            auto tried = joined_blocks(mesh, topo, group, h, options, out, v, b, o);
+            if (!tried || !(score(tried->first) > score(out))) {
+                failed.insert(name);
+                continue;
+            }
+            out = std::move(tried->first), v = std::move(tried->second), ++out.joined_blocks;
             return true;
+        }
     return false;
 }
 
-// Under-faced blocks join a neighbour, or are shared out among them
-// (docs/algorithms.md#under-faced-blocks), when the blocks score better. Greedy, one per round.
+// Under-faced blocks join a neighbour (docs/algorithms.md#under-faced-blocks) when the two make
+// a hexahedron and the blocks score better. Greedy, one join per round.
 void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
                       const std::vector<SnappedPath>& paths, double h, const BlockOptions& options,
                       BlockDecomposition& out, Validated& v) {
     const std::vector<int> group = joined_groups(mesh, topo, features, paths, out);
+    const std::vector<char> trouble = tets_in_trouble(out);
     std::set<BlockPairName> failed;
     for (int round = 0; round < options.join_rounds && join_one(mesh, topo, group, h, options, out, v, failed); ++round) {
     }
+    if (out.joined_blocks > 0) out.trouble_before_joins = trouble;
 }
 
 bool has_junction(const std::vector<SheetSource>& sources) {
@@ -635,6 +611,16 @@ void try_glued_sources(const BlockInputs& in, const SingularityGraph& graph, con
 }
 
 }  // namespace
+
+// Per tet: whether its block is invalid or in a non-conforming pair.
+std::vector<char> tets_in_trouble(const BlockDecomposition& out) {
+    std::vector<char> block(out.count, 0), tet(out.tet_block.size(), 0);
+    for (int b = 0; b < out.count; ++b) block[b] = !out.blocks[b].valid;
+    for (const BlockPair& p : out.neighbour_pairs)
+        if (!p.conforming) block[p.a] = block[p.b] = 1;
+    for (int t = 0; t < int(tet.size()); ++t) tet[t] = block[out.tet_block[t]];
+    return tet;
+}
 
 BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
                                 const FrameField& field, const SingularityGraph& graph,

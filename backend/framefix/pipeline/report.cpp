@@ -196,7 +196,6 @@ json blocks_json(const BlockDecomposition& b) {
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},
             {"joined_blocks", b.joined_blocks},
-            {"shared_out_blocks", b.shared_out_blocks},
             {"junction_tries", junction_tries},
             {"junction_mode", b.junction_mode},
             {"blocks", blocks},

@@ -38,17 +38,15 @@ std::string thin_blocks_skip(const RunResult& r) {
 // HexMe's s13o: 5.2 and 5.7 x); a few faces less (a stepped shaft: 4.1 x).
 constexpr double kMaxThinTetFactor = 6;
 
-// Whether a point lies in an invalid block or a block with a non-conforming pair: only there do
-// thin blocks need a finer mesh. Outside the mesh: no.
+// Whether a point lies in an invalid block or a block with a non-conforming pair (as they were
+// before under-faced blocks were joined away): only there do thin blocks need a finer mesh.
+// Outside the mesh: no.
 std::function<bool(const Eigen::Vector3d&)> in_trouble(const BlockDecomposition& b, const TetLocator& locator) {
-    auto trouble = std::make_shared<std::vector<char>>(size_t(b.count), 0);
-    for (int k = 0; k < b.count; ++k) (*trouble)[size_t(k)] = !b.blocks[size_t(k)].valid;
-    for (const BlockPair& p : b.neighbour_pairs)
-        if (!p.conforming) (*trouble)[size_t(p.a)] = (*trouble)[size_t(p.b)] = 1;
-    const Eigen::VectorXi* block = &b.tet_block;
-    return [trouble, block, &locator](const Eigen::Vector3d& p) {
+    auto trouble = std::make_shared<std::vector<char>>(b.trouble_before_joins.empty() ? tets_in_trouble(b)
+                                                                                      : b.trouble_before_joins);
+    return [trouble, &locator](const Eigen::Vector3d& p) {
         const TetLocation where = locator.locate(p);
-        return where.tet >= 0 && (*trouble)[size_t((*block)[where.tet])];
+        return where.tet >= 0 && (*trouble)[size_t(where.tet)];
     };
 }
 

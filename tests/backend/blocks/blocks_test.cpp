@@ -296,12 +296,10 @@ RunResult corrected(const std::string& name, double factor) {
     return framefix::run(RunInput::file(sample(name)), options);
 }
 
-BlockDecomposition blocks_of(const RunResult& r, bool try_glued, int join_rounds = BlockOptions{}.join_rounds,
-                             bool share_out = true) {
+BlockDecomposition blocks_of(const RunResult& r, bool try_glued, int join_rounds = BlockOptions{}.join_rounds) {
     BlockOptions o;
     o.try_glued = try_glued;
     o.join_rounds = join_rounds;
-    o.share_out = share_out;
     static const std::vector<SnappedPath> no_paths;
     return build_blocks(r.mesh->tets, r.mesh->topology, r.mesh->features, r.field->frames, *r.singularities,
                         r.correction ? r.correction->snap.paths : no_paths, o);
@@ -346,19 +344,6 @@ TEST(BlocksOnSamples, WedgesCutOffABlockJoinTheNeighbourTheyMakeAHexahedronWith)
     EXPECT_GE(joined.valid, apart.valid);  // each join makes a hexahedron: no valid block is lost
     EXPECT_GT(2 * joined.valid - joined.count, 2 * apart.valid - apart.count);
     expect_partition(r.mesh->tets, r.mesh->topology, joined);
-}
-
-TEST(BlocksOnSamples, AWedgeNoNeighbourMakesAHexahedronWithIsSharedOutAmongThem) {
-    // The narrow groove, snapped: after its wedges joined what they could, one is left that
-    // no single neighbour makes a hexahedron with; shared out among them, the blocks are better.
-    const RunResult r = corrected("groove_narrow", 1);
-    const BlockDecomposition shared = blocks_of(r, true), kept = blocks_of(r, true, BlockOptions{}.join_rounds, false);
-    EXPECT_EQ(kept.shared_out_blocks, 0);
-    ASSERT_GT(shared.shared_out_blocks, 0);
-    EXPECT_GT(shared.joined_blocks, 0);
-    EXPECT_LT(under_faced(shared), under_faced(kept));
-    EXPECT_GT(2 * shared.valid - shared.count, 2 * kept.valid - kept.count);
-    expect_partition(r.mesh->tets, r.mesh->topology, shared);
 }
 
 TEST(BlocksOnSamples, SheetsAreTaggedWithTheirSources) {
