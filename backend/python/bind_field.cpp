@@ -95,7 +95,8 @@ void bind_field(py::module_& m) {
         .def_readonly("boundary", &SingularNode::boundary)
         .def_readonly("n3", &SingularNode::n3)
         .def_readonly("n5", &SingularNode::n5)
-        .def_readonly("valid", &SingularNode::valid);
+        .def_readonly("valid", &SingularNode::valid)
+        .def_readonly("crossing", &SingularNode::crossing);
     py::class_<SingularityGraph>(m, "SingularityGraph")
         .def_readonly("curves", &SingularityGraph::curves)
         .def_readonly("nodes", &SingularityGraph::nodes)

@@ -85,10 +85,12 @@ def test_groove_gets_valid_internal_nodes(tmp_path, flags):
 
 
 @pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])
-def test_groove_with_its_rims_filleted_turns_smooth(tmp_path, flags):
+def test_groove_with_its_rims_filleted_gets_the_papers_four_nodes(tmp_path, flags):
     """--fillet-rims: each floor arc's rim (radius 0.4 or 0.6 about x = y = 1, at z = 1) is filleted
     too, as the paper's Fig. 5b. The groove is 0.2 wide, so r = 0.05, below h at the default size,
-    where the fillets are meshed finer; each rim then carries valence-3 curves, and the graph is valid."""
+    where the fillets are meshed finer; each rim then carries valence-3 curves, and the graph is
+    the paper's: the curves rising from the floor arcs' nodes cross the rims' curves just under the
+    top face, in a (2, 2) node under the outer rim and a (4, 0) node under the inner one."""
     r, out = fillet(tmp_path, "groove.step", "--fillet-rims", *flags)
     check_filleted(r, out)
     c = r["correction"]
@@ -99,8 +101,7 @@ def test_groove_with_its_rims_filleted_turns_smooth(tmp_path, flags):
     for rim in (0.4, 0.6):  # valence-3 curves run the rim's whole quarter circle (a node may split them)
         along = sum(cv["length"] for cv in r["singularities"]["curves"] if cv["kind"] == "valence3" and on_rim(cv, rim))
         assert along >= 0.8 * math.pi / 2 * (rim - 0.05)
-    nodes = interior(r)
-    assert len(nodes) >= 2 and all(valid for _, _, valid in nodes)
+    assert sorted(interior(r)) == [(1, 3, True), (1, 3, True), (2, 2, True), (4, 0, True)]
 
 
 @pytest.mark.parametrize("flags", SIZES, ids=["default", "x0.7"])

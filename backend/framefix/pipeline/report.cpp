@@ -49,7 +49,8 @@ json singularities_json(const SingularityGraph& g) {
                          {"boundary", n.boundary},
                          {"n3", n.n3},
                          {"n5", n.n5},
-                         {"valid", n.valid}});
+                         {"valid", n.valid},
+                         {"crossing", n.crossing}});
     return {{"curves", curves}, {"nodes", nodes}, {"absorbed", absorbed}, {"summary", summary_json(g.summary)}};
 }
 

@@ -2,6 +2,7 @@
 // Internal steps of trace_chains (chains.h), one file each: chains.cpp walks the singular faces,
 // chain_ends.cpp resolves where chains end and builds the nodes, curve_join.cpp joins curves
 // through pass-through nodes and numbers the result.
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -61,5 +62,15 @@ int join_pass_through(ChainGraph& graph);
 // of the field that splits a loop does not save it.
 int join_and_drop_loops(ChainGraph& graph, const TetMesh& mesh);
 void renumber(ChainGraph& graph);
+
+// Whether a crossing is joined: `after` is `before` with curves a and b split at the new interior
+// node `node`; the pieces are a, b and the curves appended after before's.
+using CrossingCheck =
+    std::function<bool(const ChainGraph& before, const ChainGraph& after, int a, int b, int node)>;
+// A curve that passes within about one edge length of the inside of another curve and then leaves
+// through the boundary within about three has crossed it at a node the chains missed: both are
+// split there, at a new interior node, where `accept` agrees
+// (docs/algorithms.md#crossings-near-the-boundary). Returns how many such nodes were added.
+int join_crossings(ChainGraph& graph, const TetTopology& topo, const CrossingCheck& accept);
 
 }  // namespace framefix::detail

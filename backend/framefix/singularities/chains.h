@@ -33,6 +33,7 @@ struct ChainNode {
     std::vector<int> verts;           // boundary nodes: boundary vertices of the curve ends (sorted)
     int n_complex = 0;                // complex triangles (edges) inside the junction
     bool axes_normal = true;          // edge chains, boundary nodes: end edges' axes along the normal
+    bool crossing = false;            // added where a curve passes another just before the boundary
 };
 
 struct ChainCurve {
@@ -52,6 +53,7 @@ struct ChainGraph {
     int dead_ends = 0;                // chain ends in a tet with a single singular face
     int dead_ends_attached = 0;       // of which joined to a junction
     int joined = 0;                   // pass-through nodes removed by joining two curve ends
+    int crossings = 0;                // nodes added at crossings near the boundary (join_crossings)
 };
 
 // face_valence: #F (topology faces) 0 regular, 3, 5 or -1 complex.

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <chrono>
+#include <vector>
 
 #include "framefix/core/error.h"
 #include "framefix/singularities/chain_ends.h"
@@ -130,6 +131,35 @@ SingularCurve make_curve(const ChainCurve& c, const Labelled& h, const Singulari
     return out;
 }
 
+SingularCurve curve_of(const ChainGraph& g, int i, const Labelled& h, const TetMesh& mesh, const TetTopology& topo,
+                       const SingularityOptions& o) {
+    const ChainCurve& c = g.curves[size_t(i)];
+    return make_curve(c, h, o, core_triangles(c, g, mesh, topo, o.holonomy, o.node_core * g.h_mean),
+                      surface_end_labels(c, h, topo, o));
+}
+
+bool pure(const SingularCurve& c) { return c.kind == CurveKind::Valence3 || c.kind == CurveKind::Valence5; }
+
+// A crossing joins two pure curves into a valid node of pure pieces
+// (docs/algorithms.md#crossings-near-the-boundary): it never splits a 3-5 curve, so it cannot
+// hide one behind a node.
+int join_pure_crossings(Labelled& h, const TetMesh& mesh, const TetTopology& topo, const SingularityOptions& o) {
+    auto accept = [&](const ChainGraph& before, const ChainGraph& after, int a, int b, int node) {
+        if (!pure(curve_of(before, a, h, mesh, topo, o)) || !pure(curve_of(before, b, h, mesh, topo, o))) return false;
+        std::vector<int> pieces{a, b};
+        for (int i = int(before.curves.size()); i < int(after.curves.size()); ++i) pieces.push_back(i);
+        int n3 = 0, n5 = 0;
+        for (int i : pieces) {
+            const SingularCurve c = curve_of(after, i, h, mesh, topo, o);
+            if (!pure(c)) return false;
+            for (int k = 0; k < 2; ++k)
+                if (c.ends[k] == node) (c.end_valence[k] == 3 ? n3 : n5) += 1;
+        }
+        return is_valid_interior_node(n3, n5);
+    };
+    return detail::join_crossings(h.chains, topo, accept);
+}
+
 }  // namespace
 
 const char* to_string(CurveKind kind) {
@@ -163,6 +193,8 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
     const auto start = std::chrono::steady_clock::now();
     check_options(options);
     Labelled h = label_and_chain(mesh, topo, field, options);
+    if (options.holonomy == Holonomy::Triangles && options.join_crossings)
+        h.chains.crossings = join_pure_crossings(h, mesh, topo, options);
     const ChainGraph& chains = h.chains;
 
     SingularityGraph g;
@@ -172,6 +204,7 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
     g.dead_ends_attached = chains.dead_ends_attached;
     g.junk_chains = chains.junk_chains;
     g.joined = chains.joined;
+    g.crossings = chains.crossings;
     for (size_t i = 0; i < chains.curves.size(); ++i) {
         const ChainCurve& c = chains.curves[i];
         const double core_radius = options.node_core * chains.h_mean;
@@ -189,6 +222,7 @@ SingularityGraph extract_singularities(const TetMesh& mesh, const TetTopology& t
         n.boundary = cn.boundary;
         n.n_complex = cn.n_complex;
         n.tets = cn.tets;
+        n.crossing = cn.crossing;
         g.nodes.push_back(n);
     }
     // A curve passing through a node counts twice, a curve from a node back to it too (docs/algorithms.md#3-5-detection).

@@ -45,6 +45,7 @@ struct SingularNode {
     int n_complex = 0;                   // complex triangles absorbed
     bool valid = true;                   // interior: table of hex-meshable nodes; boundary: rule
     std::vector<int> tets;               // junction tets clustered into this node (empty on the boundary)
+    bool crossing = false;               // added where a curve crosses another near the boundary
 };
 
 struct SingularitySummary {
@@ -71,6 +72,7 @@ struct SingularityGraph {
     int dead_ends_attached = 0;          // of which joined to a junction within attach_distance
     int junk_chains = 0;                 // dropped loops from a node back to it (chains.h, chain_ends.h)
     int joined = 0;                      // pass-through nodes (two curve ends) removed by joining
+    int crossings = 0;                   // interior nodes added where a curve crosses another near the boundary
 };
 
 // Where singular curves are read (docs/algorithms.md#per-edge-holonomy): around triangles with
@@ -98,6 +100,10 @@ struct SingularityOptions {
     // features). 0 keeps them. 1.5: the curve the field lays along a chamfer's edge runs 0.2-1.2 h
     // off it, and blocks need about 3 h to be resolved.
     double absorb_radius = 1.5;
+    // Triangles: a pure curve that passes within one edge length of another pure curve and leaves
+    // through the boundary within three is split with it at a node, where that node is valid
+    // (docs/algorithms.md#crossings-near-the-boundary).
+    bool join_crossings = true;
 };
 
 // Counts the summary's curves, nodes and verdict again from `curves` and `nodes` (the face counts

@@ -4,6 +4,7 @@
 
 #include "backend/singularities/fixtures.h"
 #include "framefix/core/error.h"
+#include "framefix/singularities/chain_ends.h"
 #include "framefix/singularities/chains.h"
 
 namespace framefix {
@@ -201,6 +202,50 @@ TEST(Chains, ALoopThatLeavesItsJunctionIsACurve) {
         EXPECT_EQ(junction_loops(c), 1) << d;
         EXPECT_EQ(interior_nodes(c), 1) << d;
     }
+}
+
+// A vertical curve B from the bottom face up through the cube, past a horizontal curve A at
+// height z_a, `gap` apart in y, out through the top face (z = 1). Finer than the other tests
+// (h_mean 0.13), so that the middle lies beyond the crossing reach (3 h) from both faces.
+ChainGraph crossing_pair(double z_a, double gap, bool accept = true) {
+    Grid g{testing::cube_tets(10)};
+    g.segment(Vector3d(0.53, 0.46, -0.1), Vector3d(0.53, 0.46, 1.1));
+    g.segment(Vector3d(-0.1, 0.46 + gap, z_a), Vector3d(1.1, 0.46 + gap, z_a + 0.02));
+    ChainGraph c = g.trace();
+    c.crossings = detail::join_crossings(c, g.topo, [&](const ChainGraph&, const ChainGraph&, int, int, int) { return accept; });
+    return c;
+}
+
+TEST(Chains, ACurvePassingAnotherJustBeforeTheBoundaryCrossesItAtANode) {
+    // B passes A about 0.7 h apart, about 1 h below the top face.
+    const ChainGraph c = crossing_pair(0.87, 0.09);
+    ASSERT_NEAR(c.h_mean, 0.13, 0.01);
+    EXPECT_EQ(c.crossings, 1);
+    ASSERT_EQ(interior_nodes(c), 1);
+    ASSERT_EQ(c.curves.size(), 4u);  // A on either side of the node, B below it and its tail above
+    int node = -1;
+    for (int i = 0; i < int(c.nodes.size()); ++i)
+        if (!c.nodes[i].boundary) node = i;
+    EXPECT_TRUE(c.nodes[node].crossing);
+    EXPECT_LT(std::abs(c.nodes[node].position.z() - 0.88), c.h_mean);
+    for (const ChainCurve& curve : c.curves) EXPECT_EQ((curve.ends[0] == node) + (curve.ends[1] == node), 1);
+}
+
+TEST(Chains, CurvesApartOrFarFromTheBoundaryDoNotCross) {
+    // 1.6 h apart; 4 h from either face.
+    for (const auto& [z, gap] : {std::pair{0.87, 0.2}, std::pair{0.5, 0.09}}) {
+        const ChainGraph c = crossing_pair(z, gap);
+        EXPECT_EQ(c.crossings, 0) << z << " " << gap;
+        EXPECT_EQ(c.curves.size(), 2u) << z << " " << gap;
+        EXPECT_EQ(interior_nodes(c), 0) << z << " " << gap;
+    }
+}
+
+TEST(Chains, ACrossingTheCheckRefusesIsNotJoined) {
+    const ChainGraph c = crossing_pair(0.87, 0.09, false);
+    EXPECT_EQ(c.crossings, 0);
+    EXPECT_EQ(c.curves.size(), 2u);
+    EXPECT_EQ(interior_nodes(c), 0);
 }
 
 TEST(Chains, RejectsLabelsOfTheWrongSize) {
