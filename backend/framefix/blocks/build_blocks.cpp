@@ -12,6 +12,7 @@
 #include "framefix/blocks/block_surfaces.h"
 #include "framefix/blocks/blocks.h"
 #include "framefix/blocks/curtain_corners.h"
+#include "framefix/blocks/join_blocks.h"
 #include "framefix/blocks/partition.h"
 #include "framefix/blocks/ring_cuts.h"
 #include "framefix/blocks/sheets.h"
@@ -74,120 +75,6 @@ std::vector<int> surface_groups(const TetMesh& mesh, const TetTopology& topo, co
         group[f] = it == face_of.end() ? 0 : groups.find(it->second);
     }
     return group;
-}
-
-struct Validated {
-    std::vector<std::vector<BoundaryTriangle>> surface;  // per block: its boundary triangles
-    std::vector<BlockFaces> faces;               // per block, for the conformity check
-    std::vector<std::map<int, int>> shared;      // per block: neighbour -> shared triangles
-};
-
-// An earlier validation of the same mesh whose blocks' results can be reused: `old_of_new` maps
-// each block to its earlier id (-1: none), `new_of_old` the other way.
-struct EarlierBlocks {
-    const BlockDecomposition& blocks;
-    const Validated& validated;
-    std::vector<int> old_of_new, new_of_old;
-};
-
-int relabelled(int label, const std::vector<int>& new_of_old) { return label >= 0 ? new_of_old[label] : label; }
-
-// Whether block b's boundary is the earlier block's, labels mapped to the new ids.
-bool same_boundary(const std::vector<BoundaryTriangle>& now, const EarlierBlocks& e, int b) {
-    const int o = e.old_of_new[b];
-    if (o < 0 || e.validated.surface[o].size() != now.size()) return false;
-    const auto& then = e.validated.surface[o];
-    for (size_t i = 0; i < now.size(); ++i)
-        if (now[i].verts != then[i].verts || now[i].label != relabelled(then[i].label, e.new_of_old)) return false;
-    return true;
-}
-
-// The earlier block's validation, its labels mapped to the new ids.
-void reuse_validation(const EarlierBlocks& e, int b, BlockFaces& faces, BlockInfo& info) {
-    const int o = e.old_of_new[b];
-    faces = e.validated.faces[o];
-    for (int& l : faces.label) l = relabelled(l, e.new_of_old);
-    for (int& l : faces.cleaned) l = relabelled(l, e.new_of_old);
-    const BlockInfo& then = e.blocks.blocks[o];
-    info.valid = then.valid, info.faces = then.faces, info.edges = then.edges, info.corners = then.corners;
-    info.euler = then.euler, info.manifold = then.manifold, info.flat_edges = then.flat_edges;
-    info.flat_corners = then.flat_corners, info.reason = then.reason, info.centroid = then.centroid;
-}
-
-// Each block's boundary triangles (labelled by neighbour block or surface group), triangles
-// shared with each neighbour, tets and volume; the rest of out.blocks is reset.
-// Face f of tet t on its block's boundary, labelled with the block across (`other`) or, on the
-// part's boundary (-1), its surface group; the normal points out of tet t.
-BoundaryTriangle boundary_triangle(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, int f,
-                                   int t, int other) {
-    BoundaryTriangle tri;
-    tri.verts = topo.faces.row(f).transpose();
-    tri.label = other >= 0 ? other : -1 - group[f];
-    const Eigen::Vector3d p0 = mesh.points.row(tri.verts[0]).transpose();
-    tri.normal = (mesh.points.row(tri.verts[1]).transpose() - p0).cross(mesh.points.row(tri.verts[2]).transpose() - p0);
-    Eigen::Vector3d inner = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 4; ++k) inner += mesh.points.row(mesh.tets(t, k)).transpose() / 4;
-    if (tri.normal.dot(p0 - inner) < 0) tri.normal = -tri.normal;
-    return tri;
-}
-
-Validated collect_boundaries(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group,
-                             BlockDecomposition& out) {
-    out.blocks.assign(out.count, BlockInfo{});
-    Validated v;
-    v.shared.assign(out.count, {});
-    v.surface.assign(out.count, {});
-    auto& surface = v.surface;
-    for (int f = 0; f < int(topo.faces.rows()); ++f) {
-        const int ta = topo.face_tets(f, 0), tb = topo.face_tets(f, 1);
-        const int la = out.tet_block[ta], lb = tb >= 0 ? out.tet_block[tb] : -1;
-        if (la == lb) continue;
-        for (int side = 0; side < 2; ++side) {
-            const int t = side == 0 ? ta : tb, b = side == 0 ? la : lb, other = side == 0 ? lb : la;
-            if (b < 0) continue;
-            surface[b].push_back(boundary_triangle(mesh, topo, group, f, t, other));
-            if (other >= 0) v.shared[b][other] += 1;
-        }
-    }
-    for (int t = 0; t < mesh.num_tets(); ++t) {
-        BlockInfo& info = out.blocks[out.tet_block[t]];
-        info.tets.push_back(t);
-        info.volume += tet_volume(mesh, t);
-    }
-    return v;
-}
-
-// Each collected block validated as a hexahedron; fills out.blocks. Blocks whose boundary is
-// unchanged since `earlier` keep its results.
-void validate_collected(const TetMesh& mesh, double h, const BlockOptions& options, BlockDecomposition& out,
-                        Validated& v, const EarlierBlocks* earlier = nullptr) {
-    const auto& surface = v.surface;
-    v.faces.resize(out.count);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(options.threads > 0 ? options.threads : omp_get_max_threads())
-    for (int b = 0; b < out.count; ++b) {
-        BlockInfo& info = out.blocks[b];
-        for (auto [o, n] : v.shared[b]) info.neighbours.push_back(o);
-        if (earlier && same_boundary(surface[b], *earlier, b)) {
-            reuse_validation(*earlier, b, v.faces[b], info);
-            continue;
-        }
-        v.faces[b] = validate_block(mesh, surface[b], h, options, info);
-        std::set<int> verts;
-        for (int t : info.tets) for (int k = 0; k < 4; ++k) verts.insert(mesh.tets(t, k));
-        for (int v : verts) info.centroid += mesh.points.row(v).transpose() / double(verts.size());
-    }
-    // Both sides of an interface agree: a contact one side cleaned away as a sliver is one on the
-    // other side too. Before the lens test: what is left may be a lens (the sphere's slabs).
-    const std::vector<std::vector<int>> one_sided = one_sided_contacts(v.faces, v.shared);
-    for (int b = 0; b < out.count; ++b)
-        if (!one_sided[b].empty()) v.faces[b] = validate_block(mesh, v.surface[b], h, options, out.blocks[b], one_sided[b]);
-}
-
-Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
-                          const BlockOptions& options, BlockDecomposition& out) {
-    Validated v = collect_boundaries(mesh, topo, group, out);
-    validate_collected(mesh, h, options, out, v);
-    return v;
 }
 
 // Each block with at most 3 faces joins the neighbour it shares the most boundary triangles with
@@ -283,20 +170,6 @@ void append_sheets(SheetSoup& soup, const SheetSoup& more) {
 }
 
 // Neighbour pairs and the counts over blocks and pairs.
-void count_conformity(const Validated& v, double h, const BlockOptions& options, BlockDecomposition& out) {
-    out.neighbour_pairs = check_conformity(v.faces, options.conform_tolerance * h);
-    out.valid = out.flat_edges = out.flat_corners = out.conforming_pairs = 0;
-    for (const BlockInfo& b : out.blocks)
-        out.valid += b.valid, out.flat_edges += b.flat_edges, out.flat_corners += b.flat_corners;
-    out.pairs = int(out.neighbour_pairs.size());
-    for (const BlockPair& p : out.neighbour_pairs) out.conforming_pairs += p.conforming;
-}
-
-// Better blocks: all valid and conforming, then valid minus invalid, then conforming minus other pairs.
-std::tuple<bool, int, int> score(const BlockDecomposition& b) {
-    return {b.valid == b.count && b.conforming_pairs == b.pairs, 2 * b.valid - b.count, 2 * b.conforming_pairs - b.pairs};
-}
-
 // Partition, validation and conformity of the sheets in `out`. Where merging the pieces that the
 // staircase cleaning cut off changed the blocks, they are made again without it and the better
 // kept (on a tie, the merged ones): on 2 of the 33 part-size runs it changed, the merge lost a
@@ -356,141 +229,6 @@ void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const Fe
         count_conformity(w, h, options, tried);
         if (better(tried, out)) out = std::move(tried), v = std::move(w);
     }
-}
-
-// Invalid blocks of fewer than 6 faces, smallest first: wedges and slivers a sheet cut off a
-// block (no hexahedron has fewer faces).
-std::vector<int> under_faced_blocks(const BlockDecomposition& out) {
-    std::vector<int> under;
-    for (int b = 0; b < out.count; ++b)
-        if (!out.blocks[b].valid && out.blocks[b].faces < 6 && !out.blocks[b].neighbours.empty()) under.push_back(b);
-    std::sort(under.begin(), under.end(), [&](int a, int b) { return out.blocks[a].volume < out.blocks[b].volume; });
-    return under;
-}
-
-int tet_across(const TetTopology& topo, int f, int t) {
-    return topo.face_tets(f, 0) == t ? topo.face_tets(f, 1) : topo.face_tets(f, 0);
-}
-
-// Whether blocks `from` and `into` together, before any staircase cleaning, have a manifold
-// sphere boundary of fewer than 6 faces: the cleaning moves a few tets where a boundary is not a
-// manifold and adds no face, so the join is not worth its cost (several times this check's).
-bool hopeless_join(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
-                   const BlockOptions& options, const BlockDecomposition& out, int from, int into) {
-    auto inside = [&](int t) { return t >= 0 && (out.tet_block[t] == from || out.tet_block[t] == into); };
-    std::vector<std::pair<int, int>> faces;  // (face, tet inside), in face order as collect_boundaries lists them
-    for (int b : {from, into})
-        for (int t : out.blocks[b].tets)
-            for (int k = 0; k < 4; ++k)
-                if (!inside(tet_across(topo, topo.tet_faces(t, k), t))) faces.push_back({topo.tet_faces(t, k), t});
-    std::sort(faces.begin(), faces.end());
-    std::vector<BoundaryTriangle> surface;
-    for (auto [f, t] : faces) {
-        const int across = tet_across(topo, f, t);
-        surface.push_back(boundary_triangle(mesh, topo, group, f, t, across >= 0 ? out.tet_block[across] : -1));
-    }
-    BlockInfo joined;
-    validate_block(mesh, surface, h, options, joined);
-    return !joined.valid && joined.manifold && joined.euler == 2 && joined.faces < 6;
-}
-
-// Block ids of `out` and of `tried` (out with `from` joined to `into`) mapped both ways; the
-// joined block has no earlier counterpart.
-EarlierBlocks map_earlier(const BlockDecomposition& out, const Validated& v, const BlockDecomposition& tried, int from,
-                          int into) {
-    EarlierBlocks earlier{out, v, std::vector<int>(tried.count, -1), std::vector<int>(out.count, -1)};
-    for (int b = 0; b < out.count; ++b) {
-        const int n = tried.tet_block[out.blocks[b].tets.front()];
-        earlier.new_of_old[b] = n;
-        if (b != from && b != into) earlier.old_of_new[n] = b;
-    }
-    return earlier;
-}
-
-// The blocks of `from` and its neighbours, flagged: where moving `from`'s tets can change a staircase.
-std::vector<char> near_blocks(const BlockDecomposition& out, int from) {
-    std::vector<char> near(out.count, 0);
-    near[from] = 1;
-    for (int n : out.blocks[from].neighbours) near[n] = 1;
-    return near;
-}
-
-// `out` relabelled as `labels` (block `from` moved into a neighbour), cleaned where `near`
-// flags and validated again; none when a block that took its tets is no hexahedron.
-std::optional<std::pair<BlockDecomposition, Validated>> relabelled_blocks(
-    const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h, const BlockOptions& options,
-    const BlockDecomposition& out, const Validated& v, Eigen::VectorXi labels, const std::vector<char>& near, int from,
-    int into) {
-    BlockDecomposition tried = out;
-    tried.tet_block = clean_staircase(mesh, topo, std::move(labels), near);
-    tried.count = compact_labels(tried.tet_block);
-    const int m = into >= 0 ? tried.tet_block[out.blocks[into].tets.front()] : -1;
-    Validated w = collect_boundaries(mesh, topo, group, tried);
-    if (m >= 0) {
-        BlockInfo joined;
-        validate_block(mesh, w.surface[m], h, options, joined);
-        if (!joined.valid && joined.faces < 6) return std::nullopt;  // dissolving contacts only removes faces
-    }
-    const EarlierBlocks earlier = map_earlier(out, v, tried, from, into);  // the others keep their results
-    validate_collected(mesh, h, options, tried, w, &earlier);
-    // Every block that took `from`'s tets must be a hexahedron: merging an invalid block into
-    // another invalid one would score better and help nobody (a ring's pieces back into a ring).
-    for (int t : out.blocks[from].tets)
-        if (!tried.blocks[tried.tet_block[t]].valid) return std::nullopt;
-    count_conformity(w, h, options, tried);
-    return std::pair{std::move(tried), std::move(w)};
-}
-
-// `out` with block `from` joined to block `into`; none when the joined block is no hexahedron.
-std::optional<std::pair<BlockDecomposition, Validated>> joined_blocks(const TetMesh& mesh, const TetTopology& topo,
-                                                       const std::vector<int>& group, double h,
-                                                       const BlockOptions& options, const BlockDecomposition& out,
-                                                       const Validated& v, int from, int into) {
-    if (hopeless_join(mesh, topo, group, h, options, out, from, into)) return std::nullopt;
-    Eigen::VectorXi labels = out.tet_block;
-    for (int t : out.blocks[from].tets) labels[t] = into;
-    std::vector<char> near = near_blocks(out, from);
-    for (int n : out.blocks[into].neighbours) near[n] = 1;
-    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near, from, into);
-}
-
-// A pair of blocks named by their first tets and sizes, so that a try that failed is not
-// repeated while both blocks stay as they were.
-using BlockPairName = std::tuple<int, int, int, int>;
-BlockPairName pair_name(const BlockDecomposition& out, int b, int o) {
-    return {out.blocks[b].tets.front(), int(out.blocks[b].tets.size()), out.blocks[o].tets.front(),
-            int(out.blocks[o].tets.size())};
-}
-
-// One join of an under-faced block to a neighbour that gives better blocks, into `out`. False if none does.
-bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
-              const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlockPairName>& failed) {
-    for (int b : under_faced_blocks(out))
-        for (int o : out.blocks[b].neighbours) {
-            const BlockPairName name = pair_name(out, b, o);
-            if (failed.count(name)) continue;
-            auto tried = joined_blocks(mesh, topo, group, h, options, out, v, b, o);
-            if (!tried || !(score(tried->first) > score(out))) {
-                failed.insert(name);
-                continue;
-            }
-            out = std::move(tried->first), v = std::move(tried->second), ++out.joined_blocks;
-            return true;
-        }
-    return false;
-}
-
-// Under-faced blocks join a neighbour (docs/algorithms.md#under-faced-blocks) when the two make
-// a hexahedron and the blocks score better. Greedy, one join per round.
-void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
-                      const std::vector<SnappedPath>& paths, double h, const BlockOptions& options,
-                      BlockDecomposition& out, Validated& v) {
-    const std::vector<int> group = joined_groups(mesh, topo, features, paths, out);
-    const std::vector<char> trouble = tets_in_trouble(out);
-    std::set<BlockPairName> failed;
-    for (int round = 0; round < options.join_rounds && join_one(mesh, topo, group, h, options, out, v, failed); ++round) {
-    }
-    if (out.joined_blocks > 0) out.trouble_before_joins = trouble;
 }
 
 bool has_junction(const std::vector<SheetSource>& sources) {
@@ -588,7 +326,7 @@ Validated blocks_from_sources(const BlockInputs& in, const std::vector<SheetSour
         if (score(cut) > score(out)) out = std::move(cut), v = std::move(w);
     }
     join_ambiguous_edges(in.mesh, in.topo, in.features, in.paths, in.h, in.options, out, v);
-    join_under_faced(in.mesh, in.topo, in.features, in.paths, in.h, in.options, out, v);
+    join_under_faced(in.mesh, in.topo, joined_groups(in.mesh, in.topo, in.features, in.paths, out), in.h, in.options, out, v);
     return v;
 }
 

@@ -2,11 +2,13 @@
 // Block validity and conformity (docs/algorithms.md#block-faces-and-patch-cleaning, #block-validation,
 // #conformity). Internal to blocks.
 #include <map>
+#include <tuple>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "framefix/blocks/blocks.h"
+#include "framefix/mesh/tet_topology.h"
 
 namespace framefix {
 
@@ -25,5 +27,40 @@ std::vector<std::vector<int>> one_sided_contacts(const std::vector<BlockFaces>& 
 // Every pair of blocks with a shared patch: exactly one patch labelled with the other block on
 // each side, 4 corners on it in each block, corner sets equal within tolerance (model units).
 std::vector<BlockPair> check_conformity(const std::vector<BlockFaces>& faces, double tolerance);
+
+// ---- All blocks at once (validate_all.cpp) ----
+
+struct Validated {
+    std::vector<std::vector<BoundaryTriangle>> surface;  // per block: its boundary triangles
+    std::vector<BlockFaces> faces;               // per block, for the conformity check
+    std::vector<std::map<int, int>> shared;      // per block: neighbour -> shared triangles
+};
+
+// An earlier validation of the same mesh whose blocks' results can be reused: `old_of_new` maps
+// each block to its earlier id (-1: none), `new_of_old` the other way.
+struct EarlierBlocks {
+    const BlockDecomposition& blocks;
+    const Validated& validated;
+    std::vector<int> old_of_new, new_of_old;
+};
+
+// Face f of tet t on its block's boundary, labelled with the block across (`other`) or, on the
+// part's boundary (-1), its surface group (`group`); the normal points out of tet t.
+BoundaryTriangle boundary_triangle(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, int f,
+                                   int t, int other);
+// Each block's boundary triangles (labelled by neighbour block or surface group), triangles
+// shared with each neighbour, tets and volume; the rest of out.blocks is reset.
+Validated collect_boundaries(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group,
+                             BlockDecomposition& out);
+// Each collected block validated as a hexahedron; fills out.blocks. Blocks whose boundary is
+// unchanged since `earlier` keep its results.
+void validate_collected(const TetMesh& mesh, double h, const BlockOptions& options, BlockDecomposition& out,
+                        Validated& v, const EarlierBlocks* earlier = nullptr);
+Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                          const BlockOptions& options, BlockDecomposition& out);
+// out.neighbour_pairs and the counts of valid blocks, flat edges and corners, conforming pairs.
+void count_conformity(const Validated& v, double h, const BlockOptions& options, BlockDecomposition& out);
+// Better blocks: all valid and conforming, then valid minus invalid, then conforming minus other pairs.
+std::tuple<bool, int, int> score(const BlockDecomposition& b);
 
 }  // namespace framefix

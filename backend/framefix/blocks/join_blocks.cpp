@@ -1,0 +1,147 @@
+// Under-faced blocks joined to a neighbour (docs/algorithms.md#under-faced-blocks).
+#include "framefix/blocks/join_blocks.h"
+
+#include <algorithm>
+#include <optional>
+#include <set>
+#include <tuple>
+#include <utility>
+
+#include "framefix/blocks/partition.h"
+
+namespace framefix {
+namespace {
+
+// Invalid blocks of fewer than 6 faces, smallest first: wedges and slivers a sheet cut off a
+// block (no hexahedron has fewer faces).
+std::vector<int> under_faced_blocks(const BlockDecomposition& out) {
+    std::vector<int> under;
+    for (int b = 0; b < out.count; ++b)
+        if (!out.blocks[b].valid && out.blocks[b].faces < 6 && !out.blocks[b].neighbours.empty()) under.push_back(b);
+    std::sort(under.begin(), under.end(), [&](int a, int b) { return out.blocks[a].volume < out.blocks[b].volume; });
+    return under;
+}
+
+int tet_across(const TetTopology& topo, int f, int t) {
+    return topo.face_tets(f, 0) == t ? topo.face_tets(f, 1) : topo.face_tets(f, 0);
+}
+
+// Whether blocks `from` and `into` together, before any staircase cleaning, have a manifold
+// sphere boundary of fewer than 6 faces: the cleaning moves a few tets where a boundary is not a
+// manifold and adds no face, so the join is not worth its cost (several times this check's).
+bool hopeless_join(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                   const BlockOptions& options, const BlockDecomposition& out, int from, int into) {
+    auto inside = [&](int t) { return t >= 0 && (out.tet_block[t] == from || out.tet_block[t] == into); };
+    std::vector<std::pair<int, int>> faces;  // (face, tet inside), in face order as collect_boundaries lists them
+    for (int b : {from, into})
+        for (int t : out.blocks[b].tets)
+            for (int k = 0; k < 4; ++k)
+                if (!inside(tet_across(topo, topo.tet_faces(t, k), t))) faces.push_back({topo.tet_faces(t, k), t});
+    std::sort(faces.begin(), faces.end());
+    std::vector<BoundaryTriangle> surface;
+    for (auto [f, t] : faces) {
+        const int across = tet_across(topo, f, t);
+        surface.push_back(boundary_triangle(mesh, topo, group, f, t, across >= 0 ? out.tet_block[across] : -1));
+    }
+    BlockInfo joined;
+    validate_block(mesh, surface, h, options, joined);
+    return !joined.valid && joined.manifold && joined.euler == 2 && joined.faces < 6;
+}
+
+// Block ids of `out` and of `tried` (out with `from` joined to `into`) mapped both ways; the
+// joined block has no earlier counterpart.
+EarlierBlocks map_earlier(const BlockDecomposition& out, const Validated& v, const BlockDecomposition& tried, int from,
+                          int into) {
+    EarlierBlocks earlier{out, v, std::vector<int>(tried.count, -1), std::vector<int>(out.count, -1)};
+    for (int b = 0; b < out.count; ++b) {
+        const int n = tried.tet_block[out.blocks[b].tets.front()];
+        earlier.new_of_old[b] = n;
+        if (b != from && b != into) earlier.old_of_new[n] = b;
+    }
+    return earlier;
+}
+
+// The blocks of `from` and its neighbours, flagged: where moving `from`'s tets can change a staircase.
+std::vector<char> near_blocks(const BlockDecomposition& out, int from) {
+    std::vector<char> near(out.count, 0);
+    near[from] = 1;
+    for (int n : out.blocks[from].neighbours) near[n] = 1;
+    return near;
+}
+
+// `out` relabelled as `labels` (block `from` moved into block `into`), cleaned where `near`
+// flags and validated again; none when the block that took its tets is no hexahedron.
+std::optional<std::pair<BlockDecomposition, Validated>> relabelled_blocks(
+    const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h, const BlockOptions& options,
+    const BlockDecomposition& out, const Validated& v, Eigen::VectorXi labels, const std::vector<char>& near, int from,
+    int into) {
+    BlockDecomposition tried = out;
+    tried.tet_block = clean_staircase(mesh, topo, std::move(labels), near);
+    tried.count = compact_labels(tried.tet_block);
+    Validated w = collect_boundaries(mesh, topo, group, tried);
+    BlockInfo joined;
+    validate_block(mesh, w.surface[tried.tet_block[out.blocks[into].tets.front()]], h, options, joined);
+    if (!joined.valid && joined.faces < 6) return std::nullopt;  // dissolving contacts only removes faces
+    const EarlierBlocks earlier = map_earlier(out, v, tried, from, into);  // the others keep their results
+    validate_collected(mesh, h, options, tried, w, &earlier);
+    // Every block that took `from`'s tets must be a hexahedron: the cleaning may hand some to a
+    // neighbour, and merging an invalid block into another invalid one would score better and
+    // help nobody (a ring's pieces back into a ring).
+    for (int t : out.blocks[from].tets)
+        if (!tried.blocks[tried.tet_block[t]].valid) return std::nullopt;
+    count_conformity(w, h, options, tried);
+    return std::pair{std::move(tried), std::move(w)};
+}
+
+// `out` with block `from` joined to block `into`; none when the joined block is no hexahedron.
+std::optional<std::pair<BlockDecomposition, Validated>> joined_blocks(const TetMesh& mesh, const TetTopology& topo,
+                                                       const std::vector<int>& group, double h,
+                                                       const BlockOptions& options, const BlockDecomposition& out,
+                                                       const Validated& v, int from, int into) {
+    if (hopeless_join(mesh, topo, group, h, options, out, from, into)) return std::nullopt;
+    Eigen::VectorXi labels = out.tet_block;
+    for (int t : out.blocks[from].tets) labels[t] = into;
+    std::vector<char> near = near_blocks(out, from);
+    for (int n : out.blocks[into].neighbours) near[n] = 1;
+    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near, from, into);
+}
+
+// A pair of blocks named by their first tets and sizes, so that a try that failed is not
+// repeated while both blocks stay as they were.
+using BlockPairName = std::tuple<int, int, int, int>;
+BlockPairName pair_name(const BlockDecomposition& out, int b, int o) {
+    return {out.blocks[b].tets.front(), int(out.blocks[b].tets.size()), out.blocks[o].tets.front(),
+            int(out.blocks[o].tets.size())};
+}
+
+// One join of an under-faced block to a neighbour that gives better blocks, into `out`. False if none does.
+bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+              const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlockPairName>& failed) {
+    for (int b : under_faced_blocks(out))
+        for (int o : out.blocks[b].neighbours) {
+            const BlockPairName name = pair_name(out, b, o);
+            if (failed.count(name)) continue;
+            auto tried = joined_blocks(mesh, topo, group, h, options, out, v, b, o);
+            if (!tried || !(score(tried->first) > score(out))) {
+                failed.insert(name);
+                continue;
+            }
+            out = std::move(tried->first), v = std::move(tried->second), ++out.joined_blocks;
+            return true;
+        }
+    return false;
+}
+
+}  // namespace
+
+void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                      const BlockOptions& options, BlockDecomposition& out, Validated& v) {
+    const std::vector<char> trouble = tets_in_trouble(out);
+    std::set<BlockPairName> failed;
+    for (int round = 0; round < options.join_rounds && join_one(mesh, topo, group, h, options, out, v, failed); ++round) {
+    }
+    if (out.joined_blocks > 0) out.trouble_before_joins = trouble;
+}
+
+
+}  // namespace framefix
