@@ -39,6 +39,10 @@ struct BlockOptions {
     // Rounds of "an invalid block of fewer than 6 faces joins a neighbour when the two together
     // are a hexahedron and the blocks score better" (0 = off; docs/algorithms.md#under-faced-blocks).
     int join_rounds = 10;
+    // Cuts of "an invalid block that is a pentagonal to octagonal prism is cut into hexahedra
+    // where the blocks then have more valid blocks and no more non-conforming pairs" (0 = off;
+    // docs/algorithms.md#prism-cuts).
+    int prism_rounds = 20;
     double patch_merge_area = 2;   // block-face patches below this area merge, in h^2
     // Patches touching <= 3 other patches merge below this area, in h^2: a face of a hexahedron has
     // 4 neighbouring faces, so such a patch is a sliver where four blocks meet along a line.
@@ -169,8 +173,10 @@ struct BlockDecomposition {
     int ring_cuts = 0;
     // Under-faced blocks joined to a neighbour (docs/algorithms.md#under-faced-blocks).
     int joined_blocks = 0;
+    // Prism blocks cut into hexahedra (docs/algorithms.md#prism-cuts).
+    int prism_cuts = 0;
     // Per tet: whether it lay in an invalid block or a block of a non-conforming pair before any
-    // under-faced block was joined; empty when none was. The thin-block refinement
+    // under-faced block was joined or prism cut; empty when none was. The thin-block refinement
     // reads its thin places there: a wedge joined away is still where the mesh was too coarse.
     std::vector<char> trouble_before_joins;
     // Junction nodes (docs/algorithms.md#junction-nodes): each mode tried, in order, with its

@@ -14,6 +14,7 @@
 #include "framefix/blocks/curtain_corners.h"
 #include "framefix/blocks/join_blocks.h"
 #include "framefix/blocks/partition.h"
+#include "framefix/blocks/prism_cuts.h"
 #include "framefix/blocks/ring_cuts.h"
 #include "framefix/blocks/sheets.h"
 #include "framefix/blocks/validation.h"
@@ -326,7 +327,11 @@ Validated blocks_from_sources(const BlockInputs& in, const std::vector<SheetSour
         if (score(cut) > score(out)) out = std::move(cut), v = std::move(w);
     }
     join_ambiguous_edges(in.mesh, in.topo, in.features, in.paths, in.h, in.options, out, v);
-    join_under_faced(in.mesh, in.topo, joined_groups(in.mesh, in.topo, in.features, in.paths, out), in.h, in.options, out, v);
+    const std::vector<int> group = joined_groups(in.mesh, in.topo, in.features, in.paths, out);
+    const std::vector<char> trouble = tets_in_trouble(out);
+    join_under_faced(in.mesh, in.topo, group, in.h, in.options, out, v);
+    cut_prisms(in.mesh, in.topo, group, in.h, in.options, out, v);
+    if (out.joined_blocks + out.prism_cuts > 0) out.trouble_before_joins = trouble;
     return v;
 }
 

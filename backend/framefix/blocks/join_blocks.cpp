@@ -136,12 +136,9 @@ bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<in
 
 void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
                       const BlockOptions& options, BlockDecomposition& out, Validated& v) {
-    const std::vector<char> trouble = tets_in_trouble(out);
     std::set<BlockPairName> failed;
     for (int round = 0; round < options.join_rounds && join_one(mesh, topo, group, h, options, out, v, failed); ++round) {
     }
-    if (out.joined_blocks > 0) out.trouble_before_joins = trouble;
 }
-
 
 }  // namespace framefix

@@ -9,7 +9,7 @@ namespace framefix {
 // Each invalid block of fewer than 6 faces (a wedge a sheet cut off) joins the neighbour it
 // makes a hexahedron with, where the blocks then score better; greedy, one join per round, at
 // most options.join_rounds. `group`: the surface group of every topology face. Updates `out`
-// (joined_blocks, trouble_before_joins) and its validation `v`.
+// (joined_blocks) and its validation `v`.
 void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
                       const BlockOptions& options, BlockDecomposition& out, Validated& v);
 

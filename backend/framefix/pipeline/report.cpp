@@ -197,6 +197,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},
             {"joined_blocks", b.joined_blocks},
+            {"prism_cuts", b.prism_cuts},
             {"junction_tries", junction_tries},
             {"junction_mode", b.junction_mode},
             {"blocks", blocks},

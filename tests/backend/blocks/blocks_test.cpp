@@ -296,10 +296,12 @@ RunResult corrected(const std::string& name, double factor) {
     return framefix::run(RunInput::file(sample(name)), options);
 }
 
-BlockDecomposition blocks_of(const RunResult& r, bool try_glued, int join_rounds = BlockOptions{}.join_rounds) {
+BlockDecomposition blocks_of(const RunResult& r, bool try_glued, int join_rounds = BlockOptions{}.join_rounds,
+                             int prism_rounds = BlockOptions{}.prism_rounds) {
     BlockOptions o;
     o.try_glued = try_glued;
     o.join_rounds = join_rounds;
+    o.prism_rounds = prism_rounds;
     static const std::vector<SnappedPath> no_paths;
     return build_blocks(r.mesh->tets, r.mesh->topology, r.mesh->features, r.field->frames, *r.singularities,
                         r.correction ? r.correction->snap.paths : no_paths, o);
@@ -344,6 +346,19 @@ TEST(BlocksOnSamples, WedgesCutOffABlockJoinTheNeighbourTheyMakeAHexahedronWith)
     EXPECT_GE(joined.valid, apart.valid);  // each join makes a hexahedron: no valid block is lost
     EXPECT_GT(2 * joined.valid - joined.count, 2 * apart.valid - apart.count);
     expect_partition(r.mesh->tets, r.mesh->topology, joined);
+}
+
+TEST(BlocksOnSamples, PrismBlocksAreCutIntoHexahedra) {
+    // The half-sphere box with its concave circle filleted: a block around the fillet is a
+    // pentagon extruded, one of its sides on the part's boundary; cut from the opposite edge to
+    // the middle of that side, it makes two hexahedra.
+    const RunResult r = corrected("half_sphere_box_filleted", 1);
+    const BlockDecomposition cut = blocks_of(r, true), whole = blocks_of(r, true, BlockOptions{}.join_rounds, 0);
+    EXPECT_EQ(whole.prism_cuts, 0);
+    ASSERT_GT(cut.prism_cuts, 0);
+    EXPECT_GT(cut.valid, whole.valid);
+    EXPECT_LE(cut.pairs - cut.conforming_pairs, whole.pairs - whole.conforming_pairs);
+    expect_partition(r.mesh->tets, r.mesh->topology, cut);
 }
 
 TEST(BlocksOnSamples, SheetsAreTaggedWithTheirSources) {
