@@ -22,10 +22,6 @@ std::vector<int> under_faced_blocks(const BlockDecomposition& out) {
     return under;
 }
 
-int tet_across(const TetTopology& topo, int f, int t) {
-    return topo.face_tets(f, 0) == t ? topo.face_tets(f, 1) : topo.face_tets(f, 0);
-}
-
 // Whether blocks `from` and `into` together, before any staircase cleaning, have a manifold
 // sphere boundary of fewer than 6 faces: the cleaning moves a few tets where a boundary is not a
 // manifold and adds no face, so the join is not worth its cost (several times this check's).

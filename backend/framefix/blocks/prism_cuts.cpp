@@ -87,15 +87,6 @@ std::vector<std::vector<int>> prism_cut_sides(const Prism& prism, const std::vec
 
 namespace {
 
-int tet_across(const TetTopology& topo, int f, int t) {
-    return topo.face_tets(f, 0) == t ? topo.face_tets(f, 1) : topo.face_tets(f, 0);
-}
-
-Eigen::Vector3d tet_centre(const TetMesh& mesh, int t) {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 4; ++k) c += mesh.points.row(mesh.tets(t, k)).transpose() / 4;
-    return c;
-}
 
 double segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     const Eigen::Vector3d d = b - a;
@@ -141,11 +132,11 @@ std::vector<double> distances_from(const TetMesh& mesh, const TetTopology& topo,
         const auto [dt, t] = queue.top();
         queue.pop();
         if (dt > d[t]) continue;
-        const Eigen::Vector3d ct = tet_centre(mesh, t);
+        const Eigen::Vector3d ct = tet_centroid(mesh, t);
         for (int k = 0; k < 4; ++k) {
             const int u = tet_across(topo, topo.tet_faces(t, k), t);
             if (u < 0 || out.tet_block[u] != b) continue;
-            const double du = dt + (tet_centre(mesh, u) - ct).norm();
+            const double du = dt + (tet_centroid(mesh, u) - ct).norm();
             if (du < d[u]) d[u] = du, queue.push({du, u});
         }
     }
@@ -172,7 +163,7 @@ Eigen::VectorXi cut_labels(const TetMesh& mesh, const TetTopology& topo, const B
             if (it == index.end() || tri_side[it->second] < 0) continue;
             Eigen::Vector3d fc = Eigen::Vector3d::Zero();
             for (int j = 0; j < 3; ++j) fc += mesh.points.row(key[j]).transpose() / 3;
-            seeds[tri_side[it->second]].push_back({t, (tet_centre(mesh, t) - fc).norm()});
+            seeds[tri_side[it->second]].push_back({t, (tet_centroid(mesh, t) - fc).norm()});
         }
     const std::vector<double> d0 = distances_from(mesh, topo, out, b, seeds[0]);
     const std::vector<double> d1 = distances_from(mesh, topo, out, b, seeds[1]);

@@ -17,6 +17,12 @@ double tet_volume(const TetMesh& mesh, int tet) {
     return a.dot(b.cross(c)) / 6.0;
 }
 
+Eigen::Vector3d tet_centroid(const TetMesh& mesh, int tet) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) c += mesh.points.row(mesh.tets(tet, k)).transpose();
+    return c / 4;
+}
+
 MeshQuality mesh_quality(const TetMesh& mesh) {
     MeshQuality q;
     if (mesh.num_tets() == 0) return q;

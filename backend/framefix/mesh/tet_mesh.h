@@ -37,6 +37,7 @@ struct TetMesh {
 };
 
 double tet_volume(const TetMesh& mesh, int tet);  // signed, model units^3
+Eigen::Vector3d tet_centroid(const TetMesh& mesh, int tet);  // mean of its 4 vertices, model units
 
 // The mesh as bytes and back (exact), for a mesh made in a worker process.
 std::string tet_mesh_bytes(const TetMesh& mesh);

@@ -18,6 +18,11 @@ struct TetTopology {
 
 TetTopology build_topology(const TetMesh& mesh);
 
+// The tet across face f from tet t; -1 beyond the boundary.
+inline int tet_across(const TetTopology& topo, int f, int t) {
+    return topo.face_tets(f, 0) == t ? topo.face_tets(f, 1) : topo.face_tets(f, 0);
+}
+
 // Mean length of the unique edges, model units (the mesh size h); `if_no_edges` when there are none.
 double mean_edge_length(const TetMesh& mesh, const TetTopology& topo, double if_no_edges = 0.0);
 

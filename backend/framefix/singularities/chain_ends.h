@@ -40,7 +40,6 @@ Eigen::Vector3d face_centroid(const TetMesh& mesh, const TetTopology& topo, int 
 // Groups of the points closer than `radius` to another of their group (single linkage): one
 // group id per point. For the few dead ends of a graph, so the quadratic pass is fine.
 std::vector<int> close_groups(const std::vector<Eigen::Vector3d>& points, double radius);
-Eigen::Vector3d tet_centroid(const TetMesh& mesh, int t);
 
 ChainContext classify_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& val);
 // Leave face f through `side`: true with the next face and the side it is entered from, or false

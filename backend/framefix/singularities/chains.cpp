@@ -13,11 +13,6 @@ Eigen::Vector3d face_centroid(const TetMesh& mesh, const TetTopology& topo, int 
                .transpose() / 3;
 }
 
-Eigen::Vector3d tet_centroid(const TetMesh& mesh, int t) {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 4; ++k) c += mesh.points.row(mesh.tets(t, k)).transpose();
-    return c / 4;
-}
 
 ChainContext classify_tets(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& val) {
     const int nt = mesh.num_tets();

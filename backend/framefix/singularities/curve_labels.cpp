@@ -77,11 +77,11 @@ void label_faces_along_curves(const TetMesh& mesh, const TetTopology& topo, cons
             // The tet the curve enters next lies on the normal's side: travel along the normal.
             if (i + 1 < n || wrap) {
                 const int t = shared_tet(topo, f, c.faces[(i + 1) % n]);
-                if (t >= 0) return (detail::tet_centroid(mesh, t) - e.position).dot(e.normal) > 0 ? 1 : -1;
+                if (t >= 0) return (tet_centroid(mesh, t) - e.position).dot(e.normal) > 0 ? 1 : -1;
             }
             if (i > 0 || wrap) {
                 const int t = shared_tet(topo, f, c.faces[(i + n - 1) % n]);
-                if (t >= 0) return (detail::tet_centroid(mesh, t) - e.position).dot(e.normal) > 0 ? -1 : 1;
+                if (t >= 0) return (tet_centroid(mesh, t) - e.position).dot(e.normal) > 0 ? -1 : 1;
             }
             return 1;  // a lone triangle, or a join through a node: its own label
         };

@@ -19,10 +19,6 @@ constexpr double kRetryDistance = 0.3;
 
 int thread_count(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
 
-int other_tet(const TetTopology& topo, int f, int t) {
-    return topo.face_tets(f, 0) == t ? topo.face_tets(f, 1) : topo.face_tets(f, 0);
-}
-
 // The two tets beyond the faces of t that hold edge (a, b); -1 beyond the boundary.
 std::array<int, 2> ring_neighbours(const TetMesh& mesh, const TetTopology& topo, int t, int a, int b) {
     std::array<int, 2> n{-2, -2};
@@ -30,7 +26,7 @@ std::array<int, 2> ring_neighbours(const TetMesh& mesh, const TetTopology& topo,
     for (int lv = 0; lv < 4; ++lv) {
         const int v = mesh.tets(t, lv);
         if (v == a || v == b) continue;
-        n[size_t(k++)] = other_tet(topo, topo.tet_faces(t, lv), t);  // face lf = lv is opposite vertex lv
+        n[size_t(k++)] = tet_across(topo, topo.tet_faces(t, lv), t);  // face lf = lv is opposite vertex lv
     }
     return n;
 }
@@ -51,7 +47,7 @@ int ring_valence(const TetMesh& mesh, const TetTopology& topo, const std::vector
     const Eigen::Vector3d d = mesh.points.row(topo.edges(e, 1)).transpose() - xa;
     double turn = 0;  // > 0 when the ring turns right-handed about d
     for (size_t i = 0; i < ring.size(); ++i)
-        turn += (detail::tet_centroid(mesh, ring[i]) - xa).cross(detail::tet_centroid(mesh, ring[(i + 1) % ring.size()]) - xa).dot(d);
+        turn += (tet_centroid(mesh, ring[i]) - xa).cross(tet_centroid(mesh, ring[(i + 1) % ring.size()]) - xa).dot(d);
     // Reversing the ring inverts g and flips its axis: this is the axis for the ring right-handed about d.
     *axis = (turn > 0 ? 1.0 : -1.0) * (R[size_t(ring[0])] * cube::axis(g));
     if (cube::trace(g) != 1) return -1;  // 120 or 180 deg: node material
