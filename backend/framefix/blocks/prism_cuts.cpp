@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "framefix/blocks/partition.h"
+#include "framefix/core/segment_distance.h"
 
 namespace framefix {
 namespace {
@@ -87,13 +88,6 @@ std::vector<std::vector<int>> prism_cut_sides(const Prism& prism, const std::vec
 
 namespace {
 
-
-double segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d d = b - a;
-    const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-    return (p - a - t * d).norm();
-}
-
 // The side of each boundary triangle of the block (-1: a cap's, no seed).
 std::vector<int> triangle_sides(const Prism& prism, const BlockFaces& f, const std::vector<BoundaryTriangle>& surface,
                                 const std::vector<int>& side, const TetMesh& mesh) {
@@ -112,7 +106,7 @@ std::vector<int> triangle_sides(const Prism& prism, const BlockFaces& f, const s
         Eigen::Vector3d c = Eigen::Vector3d::Zero();
         for (int k = 0; k < 3; ++k) c += mesh.points.row(surface[i].verts[k]).transpose() / 3;
         auto dist = [&](int e) {
-            return segment_distance(c, f.corner_position[prism.edge[e][0]], f.corner_position[prism.edge[e][1]]);
+            return point_segment_distance(c, f.corner_position[prism.edge[e][0]], f.corner_position[prism.edge[e][1]]);
         };
         const int n = prism.n, before = side[(li + n - 1) % n];  // edge li lies on that face's side
         out[i] = dist(li) <= dist((li + 1) % n) ? before : 1 - before;
