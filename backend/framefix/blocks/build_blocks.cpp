@@ -1,7 +1,6 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
-#include <optional>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -170,7 +169,6 @@ void append_sheets(SheetSoup& soup, const SheetSoup& more) {
     soup.source_kind.insert(soup.source_kind.end(), more.source_kind.begin(), more.source_kind.end());
 }
 
-// Neighbour pairs and the counts over blocks and pairs.
 // Partition, validation and conformity of the sheets in `out`. Where merging the pieces that the
 // staircase cleaning cut off changed the blocks, they are made again without it and the better
 // kept (on a tie, the merged ones): on 2 of the 33 part-size runs it changed, the merge lost a

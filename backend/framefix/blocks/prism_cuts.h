@@ -24,7 +24,7 @@ std::optional<Prism> prism_of(const BlockFaces& faces, const BlockInfo& info);
 // lateral face (odd n).
 std::vector<std::vector<int>> prism_cut_sides(const Prism& prism, const std::vector<int>& face_label);
 
-// Each block that is an n-gonal prism (n = 5 to 8 faces around) is cut into hexahedra, one cut
+// Each block that is an n-gonal prism (caps of 5 to 8 corners) is cut into hexahedra, one cut
 // per round, where the blocks then have more valid blocks, no valid block lost and no more
 // non-conforming pairs. At most options.prism_rounds cuts. `group`: the surface group of every
 // topology face. Updates `out` (prism_cuts) and its validation `v`.

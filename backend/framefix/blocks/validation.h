@@ -30,6 +30,7 @@ std::vector<BlockPair> check_conformity(const std::vector<BlockFaces>& faces, do
 
 // ---- All blocks at once (validate_all.cpp) ----
 
+// A decomposition's validation: what validate_block and check_conformity read, per block.
 struct Validated {
     std::vector<std::vector<BoundaryTriangle>> surface;  // per block: its boundary triangles
     std::vector<BlockFaces> faces;               // per block, for the conformity check

@@ -39,7 +39,7 @@ std::string thin_blocks_skip(const RunResult& r) {
 constexpr double kMaxThinTetFactor = 6;
 
 // Whether a point lies in an invalid block or a block with a non-conforming pair (as they were
-// before under-faced blocks were joined away): only there do thin blocks need a finer mesh.
+// before under-faced blocks were joined away or prisms cut): only there do thin blocks need a finer mesh.
 // Outside the mesh: no.
 std::function<bool(const Eigen::Vector3d&)> in_trouble(const BlockDecomposition& b, const TetLocator& locator) {
     auto trouble = std::make_shared<std::vector<char>>(b.trouble_before_joins.empty() ? tets_in_trouble(b)
