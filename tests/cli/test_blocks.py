@@ -176,3 +176,30 @@ def test_thin_refinement_can_be_turned_off_and_is_not_tried_when_blocks_are_vali
     assert code == 0, err
     t = json.loads((tmp_path / "prism" / "report.json").read_text())["blocks"]["thin_refinement"]
     assert not t["tried"] and "every block is valid" in t["reason"]
+
+
+@pytest.mark.parametrize("size", ["1", "0.7"])
+def test_a_box_chamfered_all_round_is_one_hexahedron_each_chamfer_folded_one_way(tmp_path, size):
+    """chamfer_top: four chamfers and four mitres, all ambiguous. Each chamfer folds into the top or
+    its side, never both (which would give a face wrapping three sides and 2-cornered strips), and
+    the mitres between chamfers folded the same way are joined with them."""
+    code, _, err = run("blocks", SAMPLES / "chamfer_top.step", "--method", "snap", "--size-factor", size,
+                       "--out", tmp_path, "--quiet")
+    assert code == 0, err
+    r = json.loads((tmp_path / "report.json").read_text())
+    assert r["singularities"]["summary"]["curves"] == 0
+    b = r["blocks"]
+    assert (b["count"], b["valid"]) == (1, 1), b["blocks"][0]["reason"]
+    edges = {c["edge"]: c["points"] for c in r["feature_curves"]}
+    chamfers = [e["edge"] for e in r["features"]["ambiguous"] if e["angle_min_deg"] > 130]
+    assert len(chamfers) == 8
+    # A chamfer strip's two long edges are parallel: at most one of each such pair is joined.
+    joined = set(b["joined_edges"])
+    for a in chamfers:
+        for c in chamfers:
+            if a < c and a in joined and c in joined:
+                da = [q - p for p, q in zip(edges[a][0], edges[a][-1])]
+                dc = [q - p for p, q in zip(edges[c][0], edges[c][-1])]
+                across = [q - p for p, q in zip(edges[a][0], edges[c][0])]
+                parallel = abs(sum(x * y for x, y in zip(da, dc))) > 0.99 * (sum(x * x for x in da) * sum(x * x for x in dc)) ** 0.5
+                assert not (parallel and sum(x * x for x in across) ** 0.5 < 0.3), (a, c, joined)

@@ -80,6 +80,7 @@ struct BlockInfo {
     double volume = 0;             // model units^3
     bool valid = false;            // topological hexahedron with a manifold sphere boundary
     int faces = 0, edges = 0, corners = 0;  // counts on the block's boundary after patch cleaning
+    int face_corners_off = 0;      // sum over the faces of |corners on the face - 4|
     int euler = 0;                 // Euler characteristic of the boundary surface (2 for a sphere)
     bool manifold = false;         // every boundary edge in exactly two boundary triangles
     // Flat-edge proxy (docs/algorithms.md#flat-edges-and-corners): outward mean normals of the two faces, within 2 h of their common
@@ -175,6 +176,9 @@ struct BlockDecomposition {
     int joined_blocks = 0;
     // Prism blocks cut into hexahedra (docs/algorithms.md#prism-cuts).
     int prism_cuts = 0;
+    // Triangular prism blocks made hexahedra by splitting a boundary side face in two
+    // (docs/algorithms.md#triangular-prisms).
+    int triangle_folds = 0;
     // Per tet: whether it lay in an invalid block or a block of a non-conforming pair before any
     // under-faced block was joined or prism cut; empty when none was. The thin-block refinement
     // reads its thin places there: a wedge joined away is still where the mesh was too coarse.

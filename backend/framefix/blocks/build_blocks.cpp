@@ -8,6 +8,7 @@
 
 #include <omp.h>
 
+#include "framefix/blocks/ambiguous_edges.h"
 #include "framefix/blocks/block_surfaces.h"
 #include "framefix/blocks/blocks.h"
 #include "framefix/blocks/curtain_corners.h"
@@ -16,6 +17,7 @@
 #include "framefix/blocks/prism_cuts.h"
 #include "framefix/blocks/ring_cuts.h"
 #include "framefix/blocks/sheets.h"
+#include "framefix/blocks/triangle_prisms.h"
 #include "framefix/blocks/validation.h"
 #include "framefix/core/disjoint_set.h"
 #include "framefix/core/error.h"
@@ -39,42 +41,6 @@ void check_inputs(const TetMesh& mesh, const TetTopology& topo, const FrameField
     if (!graph.face_valence.empty() && int(graph.face_valence.size()) != int(topo.faces.rows()))
         throw Error("blocks", "singularity graph has " + std::to_string(graph.face_valence.size()) +
                                   " faces, topology " + std::to_string(topo.faces.rows()) + "; re-extract singularities");
-}
-
-// CAD surface group of each topology face (-1 inside): connected boundary triangles, split at
-// feature curves and snapped paths (a snapped path is a block edge: the hex layers meet the
-// surface there at 45 degrees), joined across everything else: a cylinder's seam, and the
-// imprinted curves the field ignores (`ignored`). So one block face is not split there.
-std::vector<int> surface_groups(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
-                                const std::vector<int>& ignored, const std::vector<SnappedPath>& paths) {
-    const std::uint64_t nv = mesh.num_vertices();
-    auto ekey = [nv](int a, int b) { return edge_key(a, b, nv); };
-    std::unordered_set<PairKey> border;
-    for (int e = 0; e < int(mesh.feature_edges.rows()); ++e)
-        if (features.valence_of(mesh.edge_tags[e]) > 0 &&
-            !std::binary_search(ignored.begin(), ignored.end(), mesh.edge_tags[e]))
-            border.insert(ekey(mesh.feature_edges(e, 0), mesh.feature_edges(e, 1)));
-    for (const SnappedPath& p : paths)
-        for (size_t i = 0; i + 1 < p.vertices.size(); ++i) border.insert(ekey(p.vertices[i], p.vertices[i + 1]));
-    const int nb = int(mesh.boundary_faces.rows());
-    DisjointSet groups(nb);
-    std::unordered_map<PairKey, int> first_face;  // boundary edge -> the first boundary face seen on it
-    for (int b = 0; b < nb; ++b)
-        for (int k = 0; k < 3; ++k) {
-            const PairKey key = ekey(mesh.boundary_faces(b, k), mesh.boundary_faces(b, (k + 1) % 3));
-            auto [it, fresh] = first_face.try_emplace(key, b);
-            if (!fresh && !border.count(key)) groups.unite(it->second, b);
-        }
-    std::unordered_map<TriangleKey, int, TriangleKeyHash> face_of;  // sorted triangle -> boundary face
-    auto tkey = [](const auto& f) { return triangle_key(f(0), f(1), f(2)); };
-    for (int b = 0; b < nb; ++b) face_of[tkey(mesh.boundary_faces.row(b))] = b;
-    std::vector<int> group(topo.faces.rows(), -1);
-    for (int f = 0; f < int(topo.faces.rows()); ++f) {
-        if (topo.face_tets(f, 1) >= 0) continue;
-        auto it = face_of.find(tkey(topo.faces.row(f)));
-        group[f] = it == face_of.end() ? 0 : groups.find(it->second);
-    }
-    return group;
 }
 
 // Each block with at most 3 faces joins the neighbour it shares the most boundary triangles with
@@ -192,44 +158,6 @@ Validated partition_best(const TetMesh& mesh, const TetTopology& topo, const Poi
     return v;
 }
 
-// The surface groups across the ignored imprints, the ambiguous edges the blocks joined and `more`.
-std::vector<int> joined_groups(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
-                               const std::vector<SnappedPath>& paths, const BlockDecomposition& out, int more = -1) {
-    std::vector<int> joined = out.ignored_imprints;
-    joined.insert(joined.end(), out.joined_edges.begin(), out.joined_edges.end());
-    if (more >= 0) joined.push_back(more);
-    std::sort(joined.begin(), joined.end());
-    return surface_groups(mesh, topo, features, joined, paths);
-}
-
-// How far the invalid blocks are from a hexahedron: faces, edges and corners off 6, 12 and 8.
-int hex_defect(const BlockDecomposition& b) {
-    int d = 0;
-    for (const BlockInfo& i : b.blocks)
-        if (!i.valid) d += std::abs(i.faces - 6) + std::abs(i.edges - 12) + std::abs(i.corners - 8);
-    return d;
-}
-
-// Block faces across ambiguous feature curves (docs/algorithms.md#block-faces-across-ambiguous-edges):
-// a chamfer is folded into one of its two neighbouring faces, never both. Greedy, one curve at a
-// time in id order: a curve is joined when the blocks then score better, or as well with fewer
-// faces, edges and corners off a hexahedron's. The partition stays; only the faces change.
-void join_ambiguous_edges(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
-                          const std::vector<SnappedPath>& paths, double h, const BlockOptions& options,
-                          BlockDecomposition& out, Validated& v) {
-    auto better = [](const BlockDecomposition& a, const BlockDecomposition& b) {
-        return std::tuple(score(a), -hex_defect(a)) > std::tuple(score(b), -hex_defect(b));
-    };
-    for (const EdgeFeature& e : features.edges) {
-        if (!ambiguous_edge(e) || out.valid == out.count) continue;
-        BlockDecomposition tried = out;
-        tried.joined_edges.push_back(e.edge);
-        Validated w = validate_blocks(mesh, topo, joined_groups(mesh, topo, features, paths, out, e.edge), h, options, tried);
-        count_conformity(w, h, options, tried);
-        if (better(tried, out)) out = std::move(tried), v = std::move(w);
-    }
-}
-
 bool has_junction(const std::vector<SheetSource>& sources) {
     for (const SheetSource& s : sources)
         if (s.junction[0] >= 0 || s.junction[1] >= 0) return true;
@@ -329,6 +257,7 @@ Validated blocks_from_sources(const BlockInputs& in, const std::vector<SheetSour
     const std::vector<char> trouble = tets_in_trouble(out);
     join_under_faced(in.mesh, in.topo, group, in.h, in.options, out, v);
     cut_prisms(in.mesh, in.topo, group, in.h, in.options, out, v);
+    fold_triangle_prisms(in.mesh, in.topo, group, in.h, in.options, out, v);
     if (out.joined_blocks + out.prism_cuts > 0) out.trouble_before_joins = trouble;
     return v;
 }

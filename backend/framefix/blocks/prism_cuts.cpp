@@ -15,7 +15,6 @@
 namespace framefix {
 namespace {
 
-constexpr int kMinSides = 5;  // a triangle needs three cuts through its neighbours (not done)
 constexpr int kMaxSides = 8;
 
 std::vector<int> shared_corners(const std::vector<int>& a, const std::vector<int>& b) {
@@ -41,10 +40,10 @@ std::vector<int> lateral_cycle(const std::vector<int>& lats, const std::vector<s
 
 }  // namespace
 
-std::optional<Prism> prism_of(const BlockFaces& f, const BlockInfo& info) {
+std::optional<Prism> prism_of(const BlockFaces& f, const BlockInfo& info, int min_n) {
     const int np = int(f.label.size()), nc = int(f.corner_patches.size());
     const int n = nc / 2;
-    if (!info.manifold || info.euler != 2 || nc % 2 != 0 || n < kMinSides || n > kMaxSides || np != n + 2 ||
+    if (!info.manifold || info.euler != 2 || nc % 2 != 0 || n < min_n || n > kMaxSides || np != n + 2 ||
         info.edges != 3 * n)
         return std::nullopt;
     std::vector<std::vector<int>> corners(np);

@@ -16,8 +16,8 @@ struct Prism {
     std::vector<std::array<int, 2>> edge;  // edge[i]: the two corners laterals i - 1 and i share
 };
 
-// The prism structure of a validated block's patches, if it has one.
-std::optional<Prism> prism_of(const BlockFaces& faces, const BlockInfo& info);
+// The prism structure of a validated block's patches, if it has one with min_n to 8 sides.
+std::optional<Prism> prism_of(const BlockFaces& faces, const BlockInfo& info, int min_n = 5);
 
 // Which side of a cut each lateral face of a prism falls on: 0, 1, or 2 for the one face cut
 // across its middle. A cut runs from one lateral edge to another (even n) or to the middle of a

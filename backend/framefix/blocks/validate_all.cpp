@@ -1,6 +1,6 @@
 // Validation of all blocks of a decomposition at once, reusing earlier results where a block is
 // unchanged, and the blocks' score (docs/algorithms.md#block-validation).
-#include <set>
+#include <algorithm>
 
 #include <omp.h>
 
@@ -29,8 +29,22 @@ void reuse_validation(const EarlierBlocks& e, int b, BlockFaces& faces, BlockInf
     for (int& l : faces.cleaned) l = relabelled(l, e.new_of_old);
     const BlockInfo& then = e.blocks.blocks[o];
     info.valid = then.valid, info.faces = then.faces, info.edges = then.edges, info.corners = then.corners;
+    info.face_corners_off = then.face_corners_off;
     info.euler = then.euler, info.manifold = then.manifold, info.flat_edges = then.flat_edges;
     info.flat_corners = then.flat_corners, info.reason = then.reason, info.centroid = then.centroid;
+}
+
+// Mean of the vertices of `tets`.
+Eigen::Vector3d vertex_centroid(const TetMesh& mesh, const std::vector<int>& tets) {
+    thread_local std::vector<char> seen;  // per vertex, all 0 between calls
+    seen.resize(size_t(mesh.num_vertices()), 0);
+    std::vector<int> verts;
+    for (int t : tets)
+        for (int k = 0; k < 4; ++k)
+            if (const int v = mesh.tets(t, k); !seen[size_t(v)]) seen[size_t(v)] = 1, verts.push_back(v);
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int v : verts) c += mesh.points.row(v).transpose(), seen[size_t(v)] = 0;
+    return verts.empty() ? c : Eigen::Vector3d(c / double(verts.size()));
 }
 
 }  // namespace
@@ -87,9 +101,7 @@ void validate_collected(const TetMesh& mesh, double h, const BlockOptions& optio
             continue;
         }
         v.faces[b] = validate_block(mesh, surface[b], h, options, info);
-        std::set<int> verts;
-        for (int t : info.tets) for (int k = 0; k < 4; ++k) verts.insert(mesh.tets(t, k));
-        for (int v : verts) info.centroid += mesh.points.row(v).transpose() / double(verts.size());
+        info.centroid = vertex_centroid(mesh, info.tets);
     }
     // Both sides of an interface agree: a contact one side cleaned away as a sliver is one on the
     // other side too. Before the lens test: what is left may be a lens (the sphere's slabs).

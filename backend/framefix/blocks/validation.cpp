@@ -6,6 +6,7 @@
 #include <numeric>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "framefix/core/disjoint_set.h"
 #include "framefix/mesh/keys.h"
@@ -206,12 +207,15 @@ void dissolve_patches(const std::vector<BoundaryTriangle>& S, const Adjacency& a
 // edges at the default size are 1.6 h long). Components with a vertex in 4 or more patches (a
 // T-junction, four blocks along a line) stay whole.
 std::vector<std::vector<int>> corner_clusters(const std::map<int, std::set<int>>& vp, const Adjacency& adj) {
+    std::unordered_set<int> in3;  // vertices in 3 or more patches
+    for (const auto& [v, ps] : vp)
+        if (ps.size() >= 3) in3.insert(v);
     auto components = [&](auto&& joined) {
-        std::map<int, std::vector<int>> cadj;
+        std::unordered_map<int, std::vector<int>> cadj;
         for (const auto& p : adj.pairs)
-            if (vp.at(p.v0).size() >= 3 && vp.at(p.v1).size() >= 3 && joined(p.v0, p.v1))
+            if (in3.count(p.v0) && in3.count(p.v1) && joined(p.v0, p.v1))
                 cadj[p.v0].push_back(p.v1), cadj[p.v1].push_back(p.v0);
-        std::map<int, int> of;  // corner vertex -> component
+        std::unordered_map<int, int> of;  // corner vertex -> component
         std::vector<std::vector<int>> out;
         for (const auto& [v, ps] : vp) {
             if (ps.size() < 3 || of.count(v)) continue;
@@ -298,12 +302,12 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
     std::vector<Eigen::Vector3d> centroid(nf);
     for (int i = 0; i < nf; ++i)
         centroid[i] = (mesh.points.row(S[i].verts[0]) + mesh.points.row(S[i].verts[1]) + mesh.points.row(S[i].verts[2])).transpose() / 3;
+    std::vector<std::vector<int>> of_patch(np);
+    for (int i = 0; i < nf; ++i) of_patch[patch[i]].push_back(i);
     auto mean_normal_near = [&](int p, const std::vector<Eigen::Vector3d>& at) {
         Eigen::Vector3d n = Eigen::Vector3d::Zero();
-        for (int i = 0; i < nf; ++i) {
-            if (patch[i] != p) continue;
-            for (const auto& x : at) if ((centroid[i] - x).norm() < 2 * h) { n += S[i].normal; break; }
-        }
+        for (int i : of_patch[p])
+            for (const auto& x : at) if ((centroid[i] - x).squaredNorm() < 4 * h * h) { n += S[i].normal; break; }
         return n;
     };
     info.flat_edges = 0;
@@ -348,6 +352,15 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
         out.corner_position = corner_pos;
     }
 
+    // Counts and degrees alone admit a U-shaped face that wraps three sides of a box and two
+    // 2-cornered faces (chamfer_top with a chamfer folded both ways); a hexahedron's faces are quads.
+    int odd_face_corners = 4;
+    info.face_corners_off = 0;
+    for (const auto& c : out.corners) {
+        if (c.size() != 4) odd_face_corners = int(c.size());
+        info.face_corners_off += std::abs(int(c.size()) - 4);
+    }
+    const bool four_cornered = odd_face_corners == 4;
     const std::pair<bool, std::string> tests[] = {
         {info.manifold, "non-manifold boundary"},
         {info.euler == 2, "boundary euler " + std::to_string(info.euler)},
@@ -356,6 +369,7 @@ BlockFaces validate_block(const TetMesh& mesh, const std::vector<BoundaryTriangl
         {info.corners == 8, "corners " + std::to_string(info.corners)},
         {disks, "a face is not a disk"},
         {degree3, "a corner is not of degree 3"},
+        {four_cornered, "a face has " + std::to_string(odd_face_corners) + " corners"},
     };
     info.valid = true, info.reason.clear();  // a block validated again (one-sided contacts) drops its old reason
     for (const auto& [ok, why] : tests)

@@ -122,6 +122,28 @@ TEST(ValidateBlock, AValidationAgainForgetsTheOldReason) {
     EXPECT_EQ(info.reason, "");
 }
 
+// The chamfer_top sample with its x chamfers folded both ways: one face wraps the x sides and the
+// top (8 corners), and the y sides' top strips are faces of 2 corners. Faces, edges, corners,
+// their degrees and Euler's formula all match a hexahedron's; the faces' corners do not.
+TEST(ValidateBlock, AFaceWrappingThreeSidesIsNoHexahedronFace) {
+    TetMesh mesh = testing::cube_tets(kCells).mesh;
+    for (int f = 0; f < mesh.boundary_faces.rows(); ++f) {
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) c += point(mesh, mesh.boundary_faces(f, k)) / 3;
+        int& tag = mesh.face_tags(f);
+        if (tag == 2 || tag == 6) tag = 1;                           // x-, x+ and the top: one face
+        else if ((tag == 3 || tag == 4) && c.z() > 0.75) tag += 4;   // the y sides' top strips
+    }
+    const Blocks b = split(std::move(mesh), [](const Eigen::Vector3d&) { return 0; });
+    const BlockInfo& info = b.info[0];
+    EXPECT_EQ(info.faces, 6);
+    EXPECT_EQ(info.edges, 12);
+    EXPECT_EQ(info.corners, 8);
+    EXPECT_EQ(info.euler, 2);
+    EXPECT_FALSE(info.valid);
+    EXPECT_EQ(info.reason, "a face has 2 corners");
+}
+
 TEST(CheckConformity, HalvesOfTheCubeShareOneFace) {
     const Blocks b = split(testing::cube_tets(kCells).mesh, [](const Eigen::Vector3d& c) { return c.x() < 0.5 ? 0 : 1; });
     for (const BlockInfo& info : b.info) EXPECT_TRUE(info.valid) << info.reason;
