@@ -153,16 +153,18 @@ def test_rounded_box_thin_cushions_get_a_finer_mesh(tmp_path, factor):
 
 
 def test_glued_sheets_do_not_keep_the_gusset_from_its_finer_mesh(tmp_path):
-    """The gusset at 1.5 x: the sheets of the curves glued to its web's edges give more valid blocks
-    on the 16k-tet mesh, but thinner ones, whose finer mesh would pass the cap of 6 x. Read from the
-    blocks without those sheets, the thin places fit it, and the finer mesh's blocks are better
-    than either of the first mesh's."""
+    """The gusset at 1.5 x: the sheets of the curves glued to its web's edges make thinner blocks,
+    whose finer mesh would pass the cap of 6 x. The thin places are read from the blocks without
+    those sheets (set aside for the estimate, or kept from the start since its web folds into a
+    hexahedron: docs/algorithms.md#triangular-prisms), they fit the cap, and the finer mesh's
+    blocks are better than the first mesh's."""
     code, _, err = run("blocks", SAMPLES / "gusset.step", "--method", "snap", "--size-factor", "1.5", "--threads", "1",
                        "--out", tmp_path, "--quiet", timeout=900)
     assert code == 0, err
     r = json.loads((tmp_path / "report.json").read_text())
     t, b = r["blocks"]["thin_refinement"], r["blocks"]
-    assert t["without_glued"] and t["tried"] and t["kept"], t["reason"]
+    assert t["without_glued"] or t["before"]["glued_sources"] == 0
+    assert t["tried"] and t["kept"], t["reason"]
     assert t["tets_after"] <= 6 * t["tets_before"] and r["mesh"]["tets"] == t["tets_after"]
     assert 2 * b["valid"] - b["count"] > 2 * t["before"]["valid"] - t["before"]["count"]
 

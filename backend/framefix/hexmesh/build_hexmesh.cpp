@@ -168,12 +168,37 @@ int interfaces(const BlockComplex& cx) {
     return int(std::count_if(cx.faces.begin(), cx.faces.end(), [](const ComplexFace& f) { return !f.boundary; }));
 }
 
-// The refined mesh is kept when it has no more inverted hexes and a higher smallest scaled Jacobian.
-bool better(const HexMesh& refined, const HexMesh& plain) {
+// Hexes below this scaled Jacobian are poor: the flat corners' hexes (0 to 0.3), not the
+// 45 degree corners of a triangle's template (about 0.7) nor a curved block's (0.4 to 0.6).
+constexpr double kPoorScaledJacobian = 0.3;
+// A refinement may lower the smallest scaled Jacobian by this much when it makes the poor hexes
+// better (their shortfall below kPoorScaledJacobian, summed): the hex grid's smoothing moves the
+// worst hex a little with every change of the complex.
+constexpr double kMinJacobianSlack = 0.01;
+
+double poor_shortfall(const HexMesh& m) {
+    double sum = 0;
+    for (double sj : m.scaled_jacobian) sum += std::max(0.0, kPoorScaledJacobian - sj);
+    return sum;
+}
+
+// A refinement may make the hexes' volume miss the part's by this share more: a template joins
+// short and long block edges into one class of equal hex counts, and a coarser grid on a curved
+// face cuts more of it off (the sphere at 1 x went from 1.3 to 3 % under).
+constexpr double kVolumeSlack = 0.005;
+
+// A refined mesh is better when its volume misses `volume` (the part's) by at most the slack
+// more, and it has fewer inverted hexes; with as many, a smallest scaled Jacobian higher by more
+// than the slack, or not lower by more than it and less poor.
+bool better(const HexMesh& refined, const HexMesh& plain, double volume) {
     if (!refined.done) return false;
     if (!plain.done) return true;
+    const double miss = std::abs(refined.quality.volume - volume), was = std::abs(plain.quality.volume - volume);
+    if (miss > was + kVolumeSlack * volume) return false;
     if (refined.quality.inverted != plain.quality.inverted) return refined.quality.inverted < plain.quality.inverted;
-    return refined.quality.min_scaled_jacobian > plain.quality.min_scaled_jacobian;
+    const double rise = refined.quality.min_scaled_jacobian - plain.quality.min_scaled_jacobian;
+    if (rise > kMinJacobianSlack) return true;
+    return rise >= -kMinJacobianSlack && poor_shortfall(refined) < poor_shortfall(plain) - 1e-9;
 }
 
 // The hex mesh, or done = false with the reason; with refinement, of the better of the plain and
@@ -196,19 +221,25 @@ HexMesh mesh_blocks(const TetMesh& mesh, const BlockDecomposition& blocks, const
     out = mesh_complex(mesh, cx, size, options, cad);
     if (options.refine_flat) {
         BlockComplex refined_cx = cx;
-        const FlatRefinement f = refine_flat_edges(mesh, reach, kRefineCandidateDeg, kRefineEndDeg, refined_cx);
+        HexMesh best = out;  // the mesh of refined_cx: each refinement is kept when it beats it
+        double volume = 0;   // the tet mesh's, for the refinements' volume test
+        for (int t = 0; t < mesh.num_tets(); ++t) volume += tet_volume(mesh, t);
+        auto keep = [&](const BlockComplex& tried) {
+            HexMesh m = mesh_complex(mesh, tried, size, options, cad);
+            if (!better(m, best, volume)) return false;
+            best = std::move(m);
+            return true;
+        };
+        const FlatRefinement f = refine_flat_edges(mesh, reach, kRefineCandidateDeg, kRefineEndDeg, refined_cx, keep);
         r.applied = true, r.refined = f.refined, r.skipped = f.skipped;
         r.plain_min_scaled_jacobian = out.done ? out.quality.min_scaled_jacobian : 0;
-        if (f.refined > 0) {
-            HexMesh refined = mesh_complex(mesh, refined_cx, size, options, cad);
-            r.refined_min_scaled_jacobian = refined.done ? refined.quality.min_scaled_jacobian : 0;
-            r.kept = better(refined, out);
-            if (r.kept) {
-                const FlatCount after = count_flat(refined_cx, reach, options.flat_deg);
-                r.blocks = int(refined_cx.blocks.size()), r.pairs = interfaces(refined_cx);
-                r.flat_edges = after.edges, r.flat_corners = after.corners, r.flat_corner_positions = after.where;
-                out = std::move(refined);
-            }
+        r.kept = f.refined > 0;
+        if (r.kept) {
+            r.refined_min_scaled_jacobian = best.quality.min_scaled_jacobian;
+            const FlatCount after = count_flat(refined_cx, reach, options.flat_deg);
+            r.blocks = int(refined_cx.blocks.size()), r.pairs = interfaces(refined_cx);
+            r.flat_edges = after.edges, r.flat_corners = after.corners, r.flat_corner_positions = after.where;
+            out = std::move(best);
         }
     }
     out.refinement = r;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -140,6 +141,10 @@ int nearest_vertex(const TetMesh& mesh, const ComplexFace& f, const Eigen::Vecto
     return best;
 }
 
+// A block's corners seen along a flat edge: index at(x, y, z), the edge at x = y = 0, z along it.
+using Frame = std::array<int, 8>;
+constexpr int at(int x, int y, int z) { return x + 2 * y + 4 * z; }
+
 // Builds the three blocks of one refined block; keeps the complex's lookup tables current.
 class Splitter {
 public:
@@ -148,8 +153,9 @@ public:
         for (int f = 0; f < int(cx.faces.size()); ++f) face_of_[sorted(cx.faces[f].corners)] = f;
     }
 
-    // Refines block `bi` along its flat local edge `e`, or returns why it cannot.
-    std::string refine(int bi, int e, const std::vector<int>& edge_users);
+    // Refines block `bi` along its flat local edge `e`, with the blocks the flat edge runs on
+    // into face to face, or returns why it cannot.
+    std::string refine(int bi, int e);
 
 private:
     const TetMesh& mesh_;
@@ -157,8 +163,22 @@ private:
     std::optional<SurfaceLocator> locator_;  // made on the first refined block
     std::map<std::pair<int, int>, int> edge_of_;
     std::map<std::array<int, 4>, int> face_of_;
+    std::map<std::pair<int, int>, int> middle_of_;  // split edge (its corners, ascending) -> its middle corner
+    std::map<int, int> centre_of_;                  // flat-edge corner B -> the template's centre O on its face
 
     static std::array<int, 4> sorted(std::array<int, 4> c) { return std::sort(c.begin(), c.end()), c; }
+    // The face through the frame's corners at the given frame indices.
+    int face_of(const Frame& k, std::array<int, 4> ids) const {
+        for (int& i : ids) i = k[size_t(i)];
+        return face_of_.at(sorted(ids));
+    }
+    int face_at(const Frame& k, int z) const { return face_of(k, {at(0, 0, z), at(1, 0, z), at(1, 1, z), at(0, 1, z)}); }
+    std::vector<std::vector<int>> face_users() const {
+        std::vector<std::vector<int>> users(cx_.faces.size());
+        for (int b = 0; b < int(cx_.blocks.size()); ++b)
+            for (int f : cx_.blocks[size_t(b)].faces) users[size_t(f)].push_back(b);
+        return users;
+    }
     int edge(int x, int y) const { return edge_of_.at(std::minmax(x, y)); }
 
     int add_corner(const Eigen::Vector3d& p, std::vector<int> vertices) {
@@ -175,6 +195,7 @@ private:
         cx_.edges.push_back(std::move(e));
     }
     void add_straight_edge(int x, int y) {
+        if (edge_of_.count(std::minmax(x, y))) return;  // a neighbour split by the same sheet made it
         std::vector<Eigen::Vector3d> pts;
         for (int i = 0; i < kStraightEdgePoints; ++i) {
             const double f = double(i) / (kStraightEdgePoints - 1);
@@ -183,11 +204,31 @@ private:
         add_edge(x, y, pts, {});
     }
     void add_face(std::array<int, 4> corners, const ComplexFace* parent) {
+        if (face_of_.count(sorted(corners))) return;
         face_of_[sorted(corners)] = int(cx_.faces.size());
         cx_.faces.push_back({corners, parent ? parent->triangles : std::vector<Eigen::Vector3i>{}, parent && parent->boundary});
     }
-    // Splits the edge from x to y at its middle chain vertex: the new corner.
+    // Splits the edge from x to y at its middle chain vertex: the new corner (the same one when
+    // the edge was split before).
     int split_edge(int x, int y);
+    // The blocks (index, local axis) a sheet must split that enters the neighbours across the
+    // faces `starts` (face id, an edge of it along the sheet), away from block `flat`; nullopt
+    // with `why` when the sheet comes back to `flat` or crosses a block along two axes.
+    std::optional<std::vector<std::pair<int, int>>> sheet_blocks(const std::vector<int>& flat,
+                                                                 const std::vector<std::pair<int, int>>& starts,
+                                                                 std::string& why) const;
+    // Splits block `bi` in two across local axis d, at the middles of its four edges along d.
+    void split_block(int bi, int d);
+    // The corners of block bi seen along its local edge e (frame indices at(x, y, z)).
+    Frame frame_of(int bi, int e) const;
+    // The blocks the flat edge of block bi (frame `first`) runs through, face to face, in order
+    // along it, with their frames; nullopt with `why` where it cannot be followed. The others
+    // need not be flat there: the template halves their corner at the edge.
+    std::optional<std::vector<std::pair<int, Frame>>> flat_chain(int bi, const Frame& first, std::string& why) const;
+    // The template's centre corner O on the frame's face at z, made once per face.
+    int centre(const Frame& k, int z, int mad, int mcd);
+    // The template: block bi (frame k) becomes three blocks around O.
+    void three_blocks(int bi, const Frame& k);
     // A cube over 8 corners (local order), its edges and faces looked up by their corners.
     ComplexBlock cube(int id, const std::array<int, 8>& corners) const {
         ComplexBlock b;
@@ -205,6 +246,7 @@ private:
 };
 
 int Splitter::split_edge(int x, int y) {
+    if (auto it = middle_of_.find(std::minmax(x, y)); it != middle_of_.end()) return it->second;
     const ComplexEdge old = cx_.edges[edge(x, y)];
     std::vector<Eigen::Vector3d> pts;
     for (Eigen::Index i = 0; i < old.polyline.rows(); ++i) pts.push_back(row(old.polyline, i));
@@ -225,43 +267,162 @@ int Splitter::split_edge(int x, int y) {
     std::vector<Eigen::Vector3d> first(pts.begin(), pts.begin() + at + 1), second(pts.begin() + at, pts.end());
     add_edge(x, c, first, std::vector<int>(chain.begin(), std::min(cut + 1, chain.end())));
     add_edge(c, y, second, std::vector<int>(cut, chain.end()));
+    middle_of_[std::minmax(x, y)] = c;
     return c;
 }
 
-std::string Splitter::refine(int bi, int e, const std::vector<int>& edge_users) {
+std::optional<std::vector<std::pair<int, int>>> Splitter::sheet_blocks(const std::vector<int>& flat,
+                                                                       const std::vector<std::pair<int, int>>& starts,
+                                                                       std::string& why) const {
+    const std::vector<std::vector<int>> users = face_users();
+    std::map<int, int> axis_of;  // block -> the local axis the sheet crosses it along
+    std::vector<std::pair<int, int>> queue(starts.begin(), starts.end()), plan;
+    while (!queue.empty()) {
+        const auto [f, e] = queue.back();
+        queue.pop_back();
+        for (int b : users[size_t(f)]) {
+            const ComplexBlock& blk = cx_.blocks[size_t(b)];
+            if (std::find(flat.begin(), flat.end(), b) != flat.end()) {
+                if (std::none_of(starts.begin(), starts.end(), [&](auto s) { return s.first == f; }))
+                    return why = "the sheet through its neighbours comes back to it", std::nullopt;
+                continue;
+            }
+            const int local = int(std::find(blk.edges.begin(), blk.edges.end(), e) - blk.edges.begin());
+            if (local == 12) return why = "block " + std::to_string(blk.id) + " does not have the sheet's edge", std::nullopt;
+            const int d = local / 4;
+            if (auto it = axis_of.find(b); it != axis_of.end()) {
+                if (it->second != d) return why = "the sheet through its neighbours crosses block " + std::to_string(blk.id) + " twice", std::nullopt;
+                continue;
+            }
+            axis_of[b] = d;
+            plan.push_back({b, d});
+            // On to the blocks across its four faces along d, each with one of its edges along d.
+            for (int lf = 0; lf < 6; ++lf) {
+                if (lf / 2 == d) continue;
+                const auto fc = face_local_corners(lf);
+                const int corner = fc[0], along = edge_at(corner, d);
+                queue.push_back({blk.faces[size_t(lf)], blk.edges[size_t(along)]});
+            }
+        }
+    }
+    return plan;
+}
+
+void Splitter::split_block(int bi, int d) {
     const ComplexBlock old = cx_.blocks[size_t(bi)];
-    // Frame (x, y, z): z along the flat edge, which sits at x = y = 0; right-handed like the block.
+    std::array<int, 8> middle{};  // per local corner: the middle of the block's edge along d through it
+    for (int l = 0; l < 8; ++l) {
+        const auto ends = edge_local_corners(edge_at(l, d));
+        middle[size_t(l)] = split_edge(old.corners[size_t(ends[0])], old.corners[size_t(ends[1])]);
+    }
+    for (int half = 0; half < 2; ++half) {
+        std::array<int, 8> corners{};
+        for (int l = 0; l < 8; ++l) corners[size_t(l)] = ((l >> d) & 1) == half ? old.corners[size_t(l)] : middle[size_t(l)];
+        for (int e = 0; e < 12; ++e) {
+            const auto l = edge_local_corners(e);
+            add_straight_edge(corners[size_t(l[0])], corners[size_t(l[1])]);  // the halves of the split edges exist
+        }
+        for (int lf = 0; lf < 6; ++lf) {
+            const auto l = face_local_corners(lf);
+            const ComplexFace parent = cx_.faces[size_t(old.faces[size_t(lf)])];
+            // A face across d is the old one or the new middle face, inside the block.
+            add_face({corners[size_t(l[0])], corners[size_t(l[1])], corners[size_t(l[2])], corners[size_t(l[3])]},
+                     lf / 2 == d ? nullptr : &parent);
+        }
+        const ComplexBlock b = cube(half == 0 ? old.id : int(cx_.blocks.size()), corners);
+        if (half == 0) cx_.blocks[size_t(bi)] = b;
+        else cx_.blocks.push_back(b);
+    }
+}
+
+Frame Splitter::frame_of(int bi, int e) const {
+    const ComplexBlock& b = cx_.blocks[size_t(bi)];
+    // z along the flat edge, which sits at x = y = 0; right-handed like the block.
     const int d = e / 4, l0 = edge_local_corners(e)[0];
     std::array<int, 3> axis{(d + 1) % 3, (d + 2) % 3, d}, flip{(l0 >> ((d + 1) % 3)) & 1, (l0 >> ((d + 2) % 3)) & 1, 0};
     if ((flip[0] + flip[1]) % 2) std::swap(axis[0], axis[1]), std::swap(flip[0], flip[1]);
-    auto at = [&](int x, int y, int z) {
-        int bits[3];
-        bits[axis[0]] = x ^ flip[0], bits[axis[1]] = y ^ flip[1], bits[axis[2]] = z;
-        return old.corners[local_corner(bits[0], bits[1], bits[2])];
-    };
-    auto face = [&](int n, int side) { return old.faces[2 * axis[n] + (side ^ flip[n])]; };
-    for (auto [n, side] : {std::pair{0, 1}, {1, 1}, {2, 0}, {2, 1}})
-        if (!cx_.faces[face(n, side)].boundary) return "its face opposite the flat edge or at its ends is shared with another block";
-    for (int z = 0; z < 2; ++z)
-        if (edge_users[edge(at(1, 0, z), at(1, 1, z))] > 1 || edge_users[edge(at(0, 1, z), at(1, 1, z))] > 1)
-            return "an edge to split is shared with another block";
+    Frame k{};
+    for (int x = 0; x < 2; ++x)
+        for (int y = 0; y < 2; ++y)
+            for (int z = 0; z < 2; ++z) {
+                int bits[3];
+                bits[axis[0]] = x ^ flip[0], bits[axis[1]] = y ^ flip[1], bits[axis[2]] = z;
+                k[size_t(at(x, y, z))] = b.corners[size_t(local_corner(bits[0], bits[1], bits[2]))];
+            }
+    return k;
+}
 
+std::optional<std::vector<std::pair<int, Frame>>> Splitter::flat_chain(int bi, const Frame& first, std::string& why) const {
+    const std::vector<std::vector<int>> users = face_users();
+    std::vector<std::pair<int, Frame>> chain{{bi, first}};
+    for (int z = 0; z < 2; ++z) {  // on past the end at z = 1, then back past the one at z = 0
+        for (;;) {
+            const auto& [b, k] = z == 1 ? chain.back() : chain.front();
+            const int f = face_at(k, z);
+            if (cx_.faces[size_t(f)].boundary) break;
+            const auto across = std::find_if(users[size_t(f)].begin(), users[size_t(f)].end(), [&](int u) { return u != b; });
+            if (users[size_t(f)].size() != 2 || across == users[size_t(f)].end())
+                return why = "a face at the ends of its flat edge is not shared with one block", std::nullopt;
+            const int m = *across;
+            if (std::any_of(chain.begin(), chain.end(), [&](const auto& c) { return c.first == m; }))
+                return why = "its flat edge closes a ring of blocks", std::nullopt;
+            // The neighbour's frame: the shared face at its own z = 1 - z, then across its block.
+            const ComplexBlock& nb = cx_.blocks[size_t(m)];
+            Frame km{};
+            int d = -1;
+            for (int x = 0; x < 2; ++x)
+                for (int y = 0; y < 2; ++y) {
+                    const int c = k[size_t(at(x, y, z))];
+                    const int l = int(std::find(nb.corners.begin(), nb.corners.end(), c) - nb.corners.begin());
+                    if (l == 8) return why = "its neighbour along the flat edge does not have the shared face's corners", std::nullopt;
+                    km[size_t(at(x, y, 1 - z))] = c;
+                    km[size_t(at(x, y, z))] = -1 - l;  // its local corner, resolved below
+                }
+            for (int a = 0; a < 3 && d < 0; ++a) {
+                bool across_a = true;  // the shared face is at constant bit a of the neighbour
+                for (int x = 0; x < 2; ++x)
+                    for (int y = 0; y < 2; ++y)
+                        across_a &= ((-1 - km[size_t(at(x, y, z))]) >> a & 1) == ((-1 - km[size_t(at(0, 0, z))]) >> a & 1);
+                if (across_a) d = a;
+            }
+            for (int x = 0; x < 2; ++x)
+                for (int y = 0; y < 2; ++y) km[size_t(at(x, y, z))] = nb.corners[size_t((-1 - km[size_t(at(x, y, z))]) ^ (1 << d))];
+            const int flat_edge = int(std::find(nb.edges.begin(), nb.edges.end(), edge(km[size_t(at(0, 0, 0))], km[size_t(at(0, 0, 1))])) - nb.edges.begin());
+            if (flat_edge == 12) return why = "block " + std::to_string(nb.id) + " does not continue its flat edge", std::nullopt;
+            if (z == 1) chain.push_back({m, km});
+            else chain.insert(chain.begin(), {m, km});
+        }
+    }
+    return chain;
+}
+
+int Splitter::centre(const Frame& k, int z, int mad, int mcd) {
+    const int b = k[size_t(at(0, 0, z))];
+    if (auto it = centre_of_.find(b); it != centre_of_.end()) return it->second;
+    // At the Fermat point of its three spokes' far ends, onto the face: the three angles at it are
+    // 120 degrees (the Coons middle of the face left one near 145 on the notch).
+    const ComplexFace face = cx_.faces[size_t(face_at(k, z))];
+    const Eigen::Vector3d p =
+        fermat_point({cx_.corners[size_t(b)].position, cx_.corners[size_t(mad)].position, cx_.corners[size_t(mcd)].position});
+    if (!locator_) locator_.emplace(mesh_);
+    const Eigen::Vector3d o = FaceProjector(mesh_, face, *locator_).project(p, {});
+    const int vertex = nearest_vertex(mesh_, face, o);
+    const int c = add_corner(o, vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{});
+    centre_of_[b] = c;
+    return c;
+}
+
+void Splitter::three_blocks(int bi, const Frame& k) {
     // Per end z: B on the flat edge, A and C its neighbours, D opposite; new corners mAD, mCD, O.
     std::array<int, 2> B, A, C, D, mAD, mCD, O;
-    const ComplexFace x1 = cx_.faces[face(0, 1)], y1 = cx_.faces[face(1, 1)];
+    const ComplexFace x1 = cx_.faces[size_t(face_of(k, {at(1, 0, 0), at(1, 1, 0), at(1, 1, 1), at(1, 0, 1)}))];
+    const ComplexFace y1 = cx_.faces[size_t(face_of(k, {at(0, 1, 0), at(1, 1, 0), at(1, 1, 1), at(0, 1, 1)}))];
     for (int z = 0; z < 2; ++z) {
-        B[z] = at(0, 0, z), A[z] = at(1, 0, z), C[z] = at(0, 1, z), D[z] = at(1, 1, z);
+        B[z] = k[size_t(at(0, 0, z))], A[z] = k[size_t(at(1, 0, z))], C[z] = k[size_t(at(0, 1, z))], D[z] = k[size_t(at(1, 1, z))];
         mAD[z] = split_edge(A[z], D[z]);
         mCD[z] = split_edge(C[z], D[z]);
-        // O at the Fermat point of its three spokes' far ends, onto the end face: the three
-        // angles at O are 120 degrees (the Coons middle of the face left one near 145 on the notch).
-        const ComplexFace end = cx_.faces[face(2, z)];
-        const Eigen::Vector3d centre =
-            fermat_point({cx_.corners[B[z]].position, cx_.corners[mAD[z]].position, cx_.corners[mCD[z]].position});
-        if (!locator_) locator_.emplace(mesh_);
-        const Eigen::Vector3d o = FaceProjector(mesh_, end, *locator_).project(centre, {});
-        const int vertex = nearest_vertex(mesh_, end, o);
-        O[z] = add_corner(o, vertex >= 0 ? std::vector<int>{vertex} : std::vector<int>{});
+        O[z] = centre(k, z, mAD[z], mCD[z]);
+        const ComplexFace end = cx_.faces[size_t(face_at(k, z))];
         for (int c : {B[z], mAD[z], mCD[z]}) add_straight_edge(O[z], c);
         add_face({B[z], A[z], mAD[z], O[z]}, &end);
         add_face({B[z], O[z], mCD[z], C[z]}, &end);
@@ -277,16 +438,37 @@ std::string Splitter::refine(int bi, int e, const std::vector<int>& edge_users) 
     add_face({O[0], mCD[0], mCD[1], O[1]}, nullptr);
     // The three quads (x, y) of the cross-section, counter-clockwise like the block's frame.
     const std::array<std::array<std::array<int, 2>, 4>, 3> quads{{{B, A, mAD, O}, {B, O, mCD, C}, {O, mAD, D, mCD}}};
-    const int next_id = int(cx_.blocks.size());
+    const int id = cx_.blocks[size_t(bi)].id;
     for (size_t q = 0; q < 3; ++q) {
         std::array<int, 8> corners{};
         const int order[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
         for (int n = 0; n < 4; ++n)
             for (int z = 0; z < 2; ++z) corners[size_t(local_corner(order[n][0], order[n][1], z))] = quads[q][size_t(n)][size_t(z)];
-        const ComplexBlock b = cube(q == 0 ? old.id : next_id + int(q) - 1, corners);
+        const ComplexBlock b = cube(q == 0 ? id : int(cx_.blocks.size()), corners);
         if (q == 0) cx_.blocks[size_t(bi)] = b;
         else cx_.blocks.push_back(b);
     }
+}
+
+std::string Splitter::refine(int bi, int e) {
+    std::string why;
+    const auto chain = flat_chain(bi, frame_of(bi, e), why);
+    if (!chain) return why;
+    // The faces opposite the flat edge are split across their middles: a neighbour across one is
+    // split the same way, by a sheet on through its neighbours to the boundary.
+    std::vector<int> flat;
+    std::vector<std::pair<int, int>> starts;
+    for (const auto& [b, k] : *chain) {
+        flat.push_back(b);
+        const int x1 = face_of(k, {at(1, 0, 0), at(1, 1, 0), at(1, 1, 1), at(1, 0, 1)});
+        const int y1 = face_of(k, {at(0, 1, 0), at(1, 1, 0), at(1, 1, 1), at(0, 1, 1)});
+        if (!cx_.faces[size_t(x1)].boundary) starts.push_back({x1, edge(k[size_t(at(1, 0, 0))], k[size_t(at(1, 1, 0))])});
+        if (!cx_.faces[size_t(y1)].boundary) starts.push_back({y1, edge(k[size_t(at(0, 1, 0))], k[size_t(at(1, 1, 0))])});
+    }
+    const auto plan = sheet_blocks(flat, starts, why);
+    if (!plan) return why;
+    for (const auto& [b, d] : *plan) split_block(b, d);
+    for (const auto& [b, k] : *chain) three_blocks(b, k);
     return "";
 }
 
@@ -323,31 +505,63 @@ FlatCount count_flat(const BlockComplex& cx, double reach, double flat_deg) {
     return n;
 }
 
-FlatRefinement refine_flat_edges(const TetMesh& mesh, double reach, double flat_deg, double end_deg, BlockComplex& cx) {
+namespace {
+
+// Block bi refined along its flattest flat edge the template can take, on a copy of cx; nullopt
+// with `why` when none can or the block has none.
+std::optional<BlockComplex> refined_copy(const TetMesh& mesh, const BlockComplex& cx, int bi, double reach, double flat_deg,
+                                         double end_deg, std::string& why) {
+    std::vector<std::pair<double, int>> flat;  // candidates, flattest first
+    const FlatTest test = flat_test(cx, reach, flat_deg, end_deg);
+    for (int e = 0; e < 12; ++e)
+        if (test.flat_edge(cx.blocks[size_t(bi)], e)) flat.push_back({test.flatness(cx.blocks[size_t(bi)], e), e});
+    std::sort(flat.begin(), flat.end());
+    why.clear();
+    for (const auto& [score, e] : flat) {
+        BlockComplex tried = cx;
+        Splitter split(mesh, tried);
+        if (!(why = split.refine(bi, e)).empty()) continue;
+        compact(tried);
+        return tried;
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+FlatRefinement refine_flat_edges(const TetMesh& mesh, double reach, double flat_deg, double end_deg, BlockComplex& cx,
+                                 const std::function<bool(const BlockComplex&)>& keep) {
     FlatRefinement out;
     out.before = count_flat(cx, reach, flat_deg);
     out.blocks_before = int(cx.blocks.size());
-    std::vector<int> edge_users(cx.edges.size(), 0);
-    for (const ComplexBlock& b : cx.blocks)
-        for (int e : b.edges) edge_users[size_t(e)] += 1;
-    Splitter split(mesh, cx);
-    const int original = int(cx.blocks.size());
-    for (int bi = 0; bi < original; ++bi) {
-        const FlatTest test = flat_test(cx, reach, flat_deg, end_deg);
-        const ComplexBlock& b = cx.blocks[size_t(bi)];
-        std::vector<std::pair<double, int>> flat;  // candidates, flattest first
-        for (int e = 0; e < 12; ++e)
-            if (test.flat_edge(b, e)) flat.push_back({test.flatness(b, e), e});
-        if (flat.empty()) continue;
-        std::sort(flat.begin(), flat.end());
-        const std::string block = "block " + std::to_string(b.id);
+    // Best first: each round refines, of the blocks with a flat edge, the one whose hexes then are
+    // best. keep() accepts a complex only when its hexes beat every one it accepted before, so the
+    // round's last accepted complex is its best.
+    std::map<int, std::string> pending;  // block index -> why it is not refined (yet)
+    for (int bi = 0; bi < int(cx.blocks.size()); ++bi) {
         std::string why;
-        for (const auto& [score, e] : flat)
-            if ((why = split.refine(bi, e, edge_users)).empty()) break;
-        if (why.empty()) out.refined += 1;
-        else out.skipped.push_back(block + ": " + why);
+        if (refined_copy(mesh, cx, bi, reach, flat_deg, end_deg, why) || !why.empty()) pending[bi] = why;
     }
-    compact(cx);
+    for (bool progress = true; progress && !pending.empty();) {
+        progress = false;
+        std::optional<BlockComplex> best;
+        int chosen = -1;
+        for (auto& [bi, why] : pending) {
+            std::optional<BlockComplex> tried = refined_copy(mesh, cx, bi, reach, flat_deg, end_deg, why);
+            if (!tried) continue;
+            if (!keep(*tried)) {
+                why = "its refined hexes are not better";
+                continue;
+            }
+            best = std::move(tried), chosen = bi;
+        }
+        if (!best) break;
+        cx = std::move(*best);
+        pending.erase(chosen);
+        out.refined += 1, progress = true;
+    }
+    for (const auto& [bi, why] : pending)
+        if (!why.empty()) out.skipped.push_back("block " + std::to_string(cx.blocks[size_t(bi)].id) + ": " + why);
     out.after = count_flat(cx, reach, flat_deg);
     out.blocks_after = int(cx.blocks.size());
     return out;

@@ -5,6 +5,7 @@
 // block is a triangle with a corner on one side; the template cuts that triangle into three
 // quads around a new interior point, extruded along the edge, so the block becomes three blocks
 // with proper corners.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,11 +32,14 @@ struct FlatRefinement {
     std::vector<std::string> skipped;   // flat edges left as they are, each with the reason
 };
 
-// Splits every block with a flat edge whose four other faces lie on the part's boundary (so the
-// new corners change no neighbour) into three blocks. An edge counts as flat here when its two
-// other edges leave one end more than 180 - flat_deg and the other end more than 180 - end_deg
-// degrees apart. Blocks whose flat edge would need a sheet through a neighbour stay, listed in
-// `skipped`; `before` and `after` count with these thresholds.
-FlatRefinement refine_flat_edges(const TetMesh& mesh, double reach, double flat_deg, double end_deg, BlockComplex& cx);
+// Splits every block with a flat edge into three blocks by the template, with the blocks the
+// flat edge runs on into face to face (its ends must lie on the part's boundary); a neighbour
+// across a face the template splits is split by a sheet through its neighbours to the boundary.
+// One block at a time, on a copy that replaces `cx` only when keep(copy) says its hexes are
+// better. An edge counts as flat here when its two other edges leave one end more than
+// 180 - flat_deg and the other end more than 180 - end_deg degrees apart. Blocks left as they
+// are are listed in `skipped` with the reason; `before` and `after` count with these thresholds.
+FlatRefinement refine_flat_edges(const TetMesh& mesh, double reach, double flat_deg, double end_deg, BlockComplex& cx,
+                                 const std::function<bool(const BlockComplex&)>& keep);
 
 }  // namespace framefix

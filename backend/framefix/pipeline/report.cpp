@@ -221,7 +221,7 @@ json thin_json(const ThinRefinement& t) {
             {"min_size", t.min_size}, {"thinnest", t.thinnest}, {"without_glued", t.without_glued}, {"tets_before", t.tets_before},
             {"tets_after", t.tets_after}, {"seconds", t.seconds},
             {"before", {{"count", t.count_before}, {"valid", t.valid_before}, {"pairs", t.pairs_before},
-                        {"conforming_pairs", t.conforming_before}}},
+                        {"conforming_pairs", t.conforming_before}, {"glued_sources", t.glued_before}}},
             {"finer", {{"count", t.count_after}, {"valid", t.valid_after}, {"pairs", t.pairs_after},
                        {"conforming_pairs", t.conforming_after}}}};
 }

@@ -114,6 +114,7 @@ struct ThinRefinement {
     bool without_glued = false;
     long tets_before = 0, tets_after = 0;
     int count_before = 0, valid_before = 0, pairs_before = 0, conforming_before = 0;
+    int glued_before = 0;        // glued curves whose sheets the first blocks used (BlockDecomposition::glued_sources)
     int count_after = 0, valid_after = 0, pairs_after = 0, conforming_after = 0;
     double seconds = 0;          // the finer run, from meshing to its blocks
 };

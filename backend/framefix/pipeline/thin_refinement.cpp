@@ -68,6 +68,7 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     const BlockDecomposition& b = *r.blocks;
     t.tets_before = r.mesh->tets.num_tets();
     t.count_before = b.count, t.valid_before = b.valid, t.pairs_before = b.pairs, t.conforming_before = b.conforming_pairs;
+    t.glued_before = b.glued_sources;
     t.reason = thin_blocks_skip(r);
     if (!t.reason.empty()) return t;
     const TetLocator locator(r.mesh->tets, r.mesh->topology);
