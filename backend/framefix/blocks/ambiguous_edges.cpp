@@ -124,11 +124,14 @@ using JoinKey = std::tuple<std::tuple<bool, int, int>, int>;  // score, then min
 JoinKey key_of(const BlockDecomposition& b) { return {score(b), -hex_defect(b)}; }
 
 // Full rounds (every candidate tried, the best joined) while the tries have validated fewer tets
-// than this many times the part's; then each round tries the edges in the order of their last
-// try's blocks, best first, and joins the first that is better than no join. On a one-block part
-// (HexMe's icosahedron, 30 edges) full rounds to the end cost 400 validations of the whole part:
-// 10 s at 1 x, minutes at 0.7 x.
-constexpr double kFullRoundsWork = 100;
+// than kFullRoundsWork times the part's; then each round tries the edges in the order of their
+// last try's blocks, best first, and joins the first that is better than no join; the search
+// stops at kJoinWork times. On a one-block part (HexMe's icosahedron, 30 edges) full rounds to
+// the end cost 400 validations of the whole part (10 s at 1 x, minutes at 0.7 x), the old single
+// pass in id order 30 (4 s). On chamfer_top the first full round picks the join the later
+// rounds' order needs.
+constexpr double kFullRoundsWork = 10;
+constexpr double kJoinWork = 40;
 
 void best_first_joins(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
                       const std::vector<SnappedPath>& paths, double h, const BlockOptions& options,
@@ -137,7 +140,7 @@ void best_first_joins(const TetMesh& mesh, const TetTopology& topo, const Featur
     std::map<int, JoinKey> last;  // edge -> the key of its last try
     double work = 0;              // tets validated by the tries
     const double budget = kFullRoundsWork * double(mesh.num_tets());
-    while (!std::get<0>(score(out))) {
+    while (!std::get<0>(score(out)) && work < kJoinWork * double(mesh.num_tets())) {
         const bool full = work < budget;
         const std::vector<char> trouble = in_trouble(out);
         std::vector<int> candidates;

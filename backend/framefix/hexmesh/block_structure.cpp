@@ -366,4 +366,10 @@ BlockComplex block_complex(const TetMesh& mesh, const BlockDecomposition& d) {
     return cx;
 }
 
+int edge_at(int l, int axis) {
+    const int bits[3] = {l & 1, (l >> 1) & 1, (l >> 2) & 1};
+    const int lo = std::min((axis + 1) % 3, (axis + 2) % 3), hi = std::max((axis + 1) % 3, (axis + 2) % 3);
+    return 4 * axis + bits[lo] + 2 * bits[hi];
+}
+
 }  // namespace framefix

@@ -54,5 +54,7 @@ constexpr int local_corner(int i, int j, int k) { return i + 2 * j + 4 * k; }
 std::array<int, 4> face_local_corners(int lf);
 // Local corners at the start and end of local edge `e` (ComplexBlock::edges' numbering).
 std::array<int, 2> edge_local_corners(int e);
+// Local edge along `axis` through local corner `l`.
+int edge_at(int l, int axis);
 
 }  // namespace framefix

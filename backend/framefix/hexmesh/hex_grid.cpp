@@ -16,11 +16,6 @@ namespace {
 // (variance 20 / 2), the period of a tet-edge staircase.
 constexpr int kEdgeSmoothingRounds = 20;
 
-double polyline_length(const Points& p) {
-    double l = 0;
-    for (Eigen::Index i = 1; i < p.rows(); ++i) l += (p.row(i) - p.row(i - 1)).norm();
-    return l;
-}
 
 // n + 1 points at equal arc length along the polyline, ends included.
 std::vector<Eigen::Vector3d> resample(const Points& p, int n) {

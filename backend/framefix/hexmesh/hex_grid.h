@@ -23,6 +23,9 @@ struct HexGrid {
     std::vector<BlockGrid> block_ids;         // per complex block
 };
 
+// Arc length of a polyline, model units.
+double polyline_length(const Points& p);
+
 // Hex counts of the complex's edges (ComplexEdge::count): opposite edges of a block are one
 // class; each class gets max(1, round(mean length / size)). Returns the number of classes and
 // sets `size` when it is derived from `layers`.
