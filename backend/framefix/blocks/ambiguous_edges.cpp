@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -68,11 +67,7 @@ BlockDecomposition try_join(const TetMesh& mesh, const TetTopology& topo, const 
     tried.joined_edges.push_back(e);
     std::sort(tried.joined_edges.begin(), tried.joined_edges.end());
     w = collect_boundaries(mesh, topo, joined_groups(mesh, topo, features, paths, tried), tried);
-    std::vector<int> same(out.count);
-    std::iota(same.begin(), same.end(), 0);
-    const EarlierBlocks earlier{out, v, same, same};
-    validate_collected(mesh, h, options, tried, w, &earlier);
-    count_conformity(w, h, options, tried);
+    validate_relabelled(mesh, h, options, out, v, tried, w);
     return tried;
 }
 
@@ -152,7 +147,8 @@ void best_first_joins(const TetMesh& mesh, const TetTopology& topo, const Featur
             if (std::any_of(it->second.begin(), it->second.end(), [&](int b) { return trouble[b]; }))
                 candidates.push_back(e.edge);
         }
-        std::stable_sort(candidates.begin(), candidates.end(), [&](int a, int b) { return last[a] > last[b]; });
+        auto last_key = [&](int e) { auto it = last.find(e); return it == last.end() ? JoinKey{} : it->second; };
+        std::stable_sort(candidates.begin(), candidates.end(), [&](int a, int b) { return last_key(a) > last_key(b); });
         BlockDecomposition best;
         Validated best_v;
         bool found = false;

@@ -3,7 +3,6 @@
 #include "framefix/blocks/triangle_prisms.h"
 
 #include <algorithm>
-#include <numeric>
 #include <optional>
 
 #include "framefix/blocks/prism_cuts.h"
@@ -50,11 +49,7 @@ BlockDecomposition with_split(const TetMesh& mesh, const TetTopology& topo, cons
     // The earlier splits first: collect_boundaries labels by surface group only.
     for (int o = 0; o < out.count; ++o) w.surface[o] = v.surface[o];
     split_lateral(mesh, prism, v.faces[b], i, fresh_label(v), w.surface[b]);
-    std::vector<int> same(out.count);
-    std::iota(same.begin(), same.end(), 0);
-    const EarlierBlocks earlier{out, v, same, same};
-    validate_collected(mesh, h, options, tried, w, &earlier);
-    count_conformity(w, h, options, tried);
+    validate_relabelled(mesh, h, options, out, v, tried, w);
     return tried;
 }
 

@@ -1,6 +1,7 @@
 // Validation of all blocks of a decomposition at once, reusing earlier results where a block is
 // unchanged, and the blocks' score (docs/algorithms.md#block-validation).
 #include <algorithm>
+#include <numeric>
 
 #include <omp.h>
 
@@ -115,6 +116,15 @@ Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const st
     Validated v = collect_boundaries(mesh, topo, group, out);
     validate_collected(mesh, h, options, out, v);
     return v;
+}
+
+void validate_relabelled(const TetMesh& mesh, double h, const BlockOptions& options, const BlockDecomposition& out,
+                         const Validated& v, BlockDecomposition& tried, Validated& w) {
+    std::vector<int> same(size_t(out.count));
+    std::iota(same.begin(), same.end(), 0);
+    const EarlierBlocks earlier{out, v, same, same};
+    validate_collected(mesh, h, options, tried, w, &earlier);
+    count_conformity(w, h, options, tried);
 }
 
 void count_conformity(const Validated& v, double h, const BlockOptions& options, BlockDecomposition& out) {

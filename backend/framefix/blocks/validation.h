@@ -59,6 +59,10 @@ void validate_collected(const TetMesh& mesh, double h, const BlockOptions& optio
                         Validated& v, const EarlierBlocks* earlier = nullptr);
 Validated validate_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
                           const BlockOptions& options, BlockDecomposition& out);
+// `tried`, a copy of `out` with the same partition whose boundary labels in `w` changed, validated
+// again: blocks whose boundary is unchanged keep out's results (from `v`); conformity counted.
+void validate_relabelled(const TetMesh& mesh, double h, const BlockOptions& options, const BlockDecomposition& out,
+                         const Validated& v, BlockDecomposition& tried, Validated& w);
 // out.neighbour_pairs and the counts of valid blocks, flat edges and corners, conforming pairs.
 void count_conformity(const Validated& v, double h, const BlockOptions& options, BlockDecomposition& out);
 // Better blocks: all valid and conforming, then valid minus invalid, then conforming minus other pairs.
