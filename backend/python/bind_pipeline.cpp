@@ -139,6 +139,8 @@ void bind_blocks(py::module_& m) {
                       "invalid blocks of fewer than 6 faces joined to a neighbour, making a hexahedron")
         .def_readonly("prism_cuts", &BlockDecomposition::prism_cuts,
                       "invalid prism blocks (5 to 8 faces around) cut into hexahedra")
+        .def_readonly("carried_cuts", &BlockDecomposition::carried_cuts,
+                      "of the prism cuts, those carried on through the neighbours whose faces they split")
         .def_readonly("triangle_folds", &BlockDecomposition::triangle_folds,
                       "invalid triangular prism blocks made hexahedra by splitting a boundary side face in two")
         .def_property_readonly("junction_tries", [](const BlockDecomposition& b) {

@@ -176,6 +176,9 @@ struct BlockDecomposition {
     int joined_blocks = 0;
     // Prism blocks cut into hexahedra (docs/algorithms.md#prism-cuts).
     int prism_cuts = 0;
+    // Of those, the cuts carried on through the neighbours whose faces they split
+    // (docs/algorithms.md#cuts-carried-through-the-neighbours).
+    int carried_cuts = 0;
     // Triangular prism blocks made hexahedra by splitting a boundary side face in two
     // (docs/algorithms.md#triangular-prisms).
     int triangle_folds = 0;

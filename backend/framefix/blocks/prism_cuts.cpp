@@ -2,13 +2,12 @@
 #include "framefix/blocks/prism_cuts.h"
 
 #include <algorithm>
-#include <functional>
 #include <map>
-#include <queue>
 #include <set>
 #include <tuple>
 #include <utility>
 
+#include "framefix/blocks/carried_cuts.h"
 #include "framefix/blocks/partition.h"
 #include "framefix/core/segment_distance.h"
 
@@ -16,6 +15,9 @@ namespace framefix {
 namespace {
 
 constexpr int kMaxSides = 8;
+// A prism cut carried on through its neighbours cuts at most this many blocks: a sheet across
+// a part crosses a few blocks; one that runs on further rather comes back round.
+constexpr int kMaxCutBlocks = 16;
 
 std::vector<int> shared_corners(const std::vector<int>& a, const std::vector<int>& b) {
     std::vector<int> s;
@@ -67,22 +69,23 @@ std::optional<Prism> prism_of(const BlockFaces& f, const BlockInfo& info, int mi
     return prism;
 }
 
-std::vector<std::vector<int>> prism_cut_sides(const Prism& prism, const std::vector<int>& face_label) {
+std::vector<std::vector<int>> prism_cut_sides(const Prism& prism) {
     const int n = prism.n;
     std::set<std::vector<int>> cuts;
     for (int s = 0; s < n; ++s) {
         std::vector<int> side(n, 1);
         for (int k = 0; k < 3; ++k) side[(s + k) % n] = 0;  // three faces and the cut: a quad
-        if (n % 2 == 1) {
-            // Odd: two faces, then the middle of the third; that face must be the part's boundary,
-            // or its neighbour would see two faces.
-            if (face_label[prism.laterals[(s + 2) % n]] >= 0) continue;
-            side[(s + 2) % n] = 2;
-        }
+        if (n % 2 == 1) side[(s + 2) % n] = 2;  // two faces, then the middle of the third
         if (side[0] == 1) for (int& x : side) x = x == 2 ? 2 : 1 - x;  // one name per cut
         cuts.insert(side);
     }
     return {cuts.begin(), cuts.end()};
+}
+
+bool cuts_a_neighbour_across(const Prism& prism, const std::vector<int>& side, const std::vector<int>& face_label) {
+    for (int i = 0; i < prism.n; ++i)
+        if (side[i] == 2 && face_label[prism.laterals[i]] >= 0) return true;
+    return false;
 }
 
 namespace {
@@ -113,80 +116,35 @@ std::vector<int> triangle_sides(const Prism& prism, const BlockFaces& f, const s
     return out;
 }
 
-// Tet distances (through the block's tets) from the seeds: tets under a triangle of that side.
-std::vector<double> distances_from(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& out, int b,
-                                   const std::vector<std::pair<int, double>>& seeds) {
-    std::vector<double> d(size_t(mesh.num_tets()), 1e300);
-    using Item = std::pair<double, int>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-    for (auto [t, d0] : seeds)
-        if (d0 < d[t]) d[t] = d0, queue.push({d0, t});
-    while (!queue.empty()) {
-        const auto [dt, t] = queue.top();
-        queue.pop();
-        if (dt > d[t]) continue;
-        const Eigen::Vector3d ct = tet_centroid(mesh, t);
-        for (int k = 0; k < 4; ++k) {
-            const int u = tet_across(topo, topo.tet_faces(t, k), t);
-            if (u < 0 || out.tet_block[u] != b) continue;
-            const double du = dt + (tet_centroid(mesh, u) - ct).norm();
-            if (du < d[u]) d[u] = du, queue.push({du, u});
-        }
-    }
-    return d;
-}
-
-// The block's tets labelled 0 / 1 by the nearer side of the cut (ties to 0).
-Eigen::VectorXi cut_labels(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& out, int b,
-                           const std::vector<BoundaryTriangle>& surface, const std::vector<int>& tri_side) {
-    std::map<std::array<int, 3>, int> index;
-    for (size_t i = 0; i < surface.size(); ++i) {
-        std::array<int, 3> key{surface[i].verts[0], surface[i].verts[1], surface[i].verts[2]};
-        std::sort(key.begin(), key.end());
-        index[key] = int(i);
-    }
-    std::vector<std::pair<int, double>> seeds[2];
-    for (int t : out.blocks[b].tets)
-        for (int k = 0; k < 4; ++k) {
-            const int f = topo.tet_faces(t, k), u = tet_across(topo, f, t);
-            if (u >= 0 && out.tet_block[u] == b) continue;
-            std::array<int, 3> key{topo.faces(f, 0), topo.faces(f, 1), topo.faces(f, 2)};
-            std::sort(key.begin(), key.end());
-            const auto it = index.find(key);
-            if (it == index.end() || tri_side[it->second] < 0) continue;
-            Eigen::Vector3d fc = Eigen::Vector3d::Zero();
-            for (int j = 0; j < 3; ++j) fc += mesh.points.row(key[j]).transpose() / 3;
-            seeds[tri_side[it->second]].push_back({t, (tet_centroid(mesh, t) - fc).norm()});
-        }
-    const std::vector<double> d0 = distances_from(mesh, topo, out, b, seeds[0]);
-    const std::vector<double> d1 = distances_from(mesh, topo, out, b, seeds[1]);
-    Eigen::VectorXi labels = out.tet_block;
-    for (int t : out.blocks[b].tets) labels[t] = d1[t] < d0[t] ? out.count : b;
-    return labels;
-}
-
-// Block ids of `out` and of `tried` (out with block b cut) mapped both ways; the two halves of
-// b have no earlier counterpart.
-EarlierBlocks map_cut(const BlockDecomposition& out, const Validated& v, const BlockDecomposition& tried, int b) {
+// Block ids of `out` and of `tried` (out with the blocks of `cut` cut) mapped both ways; the
+// halves of a cut block have no earlier counterpart.
+EarlierBlocks map_cut(const BlockDecomposition& out, const Validated& v, const BlockDecomposition& tried,
+                      const CarriedCut& cut) {
     EarlierBlocks earlier{out, v, std::vector<int>(tried.count, -1), std::vector<int>(out.count, -1)};
     for (int o = 0; o < out.count; ++o) {
         const int n = tried.tet_block[out.blocks[o].tets.front()];
         earlier.new_of_old[o] = n;
-        if (o != b) earlier.old_of_new[n] = o;
+        if (std::find(cut.blocks.begin(), cut.blocks.end(), o) == cut.blocks.end()) earlier.old_of_new[n] = o;
     }
     return earlier;
 }
 
 int non_conforming(const BlockDecomposition& b) { return b.pairs - b.conforming_pairs; }
 
-// Whether `tried` keeps every block of `out` but b valid (their tets' blocks), has more valid
-// blocks, no more non-conforming pairs, and scores better.
-bool better_cut(const BlockDecomposition& out, const BlockDecomposition& tried, int b) {
+// Whether `tried` has more valid blocks, no more non-conforming pairs, a better score, and keeps
+// every block valid in `out` valid: the block of its first tet, and for a cut hexahedron the
+// blocks of all its tets (both halves).
+bool better_cut(const BlockDecomposition& out, const BlockDecomposition& tried, const CarriedCut& cut) {
     if (tried.valid <= out.valid || non_conforming(tried) > non_conforming(out) || !(score(tried) > score(out)))
         return false;
-    for (int o = 0; o < out.count; ++o)
-        if (o != b && out.blocks[o].valid && !tried.blocks[tried.tet_block[out.blocks[o].tets.front()]].valid)
-            return false;
+    for (int o = 0; o < out.count; ++o) {
+        if (!out.blocks[o].valid) continue;
+        const bool was_cut = std::find(cut.blocks.begin(), cut.blocks.end(), o) != cut.blocks.end();
+        for (int t : out.blocks[o].tets) {
+            if (!tried.blocks[tried.tet_block[t]].valid) return false;
+            if (!was_cut) break;
+        }
+    }
     return true;
 }
 
@@ -194,18 +152,24 @@ std::optional<std::pair<BlockDecomposition, Validated>> cut_block(const TetMesh&
                                                                   const std::vector<int>& group, double h,
                                                                   const BlockOptions& options,
                                                                   const BlockDecomposition& out, const Validated& v,
-                                                                  int b, const Eigen::VectorXi& labels) {
+                                                                  const CarriedCut& cut) {
     BlockDecomposition tried = out;
-    std::vector<char> near(size_t(out.count) + 1, 0);
-    near[size_t(b)] = near[size_t(out.count)] = 1;
-    for (int n : out.blocks[b].neighbours) near[size_t(n)] = 1;
+    Eigen::VectorXi labels = out.tet_block;
+    std::vector<char> near(size_t(out.count) + cut.blocks.size(), 0);
+    for (size_t k = 0; k < cut.blocks.size(); ++k) {
+        const int c = cut.blocks[k], half = out.count + int(k);
+        near[size_t(c)] = near[size_t(half)] = 1;
+        for (int n : out.blocks[c].neighbours) near[size_t(n)] = 1;
+        for (int t : out.blocks[c].tets)
+            if (cut.side[size_t(t)] == 1) labels[t] = half;
+    }
     tried.tet_block = clean_staircase(mesh, topo, labels, near);
     tried.count = compact_labels(tried.tet_block);
     Validated w = collect_boundaries(mesh, topo, group, tried);
-    const EarlierBlocks earlier = map_cut(out, v, tried, b);
+    const EarlierBlocks earlier = map_cut(out, v, tried, cut);
     validate_collected(mesh, h, options, tried, w, &earlier);
     count_conformity(w, h, options, tried);
-    if (!better_cut(out, tried, b)) return std::nullopt;
+    if (!better_cut(out, tried, cut)) return std::nullopt;
     return std::pair{std::move(tried), std::move(w)};
 }
 
@@ -224,7 +188,7 @@ std::vector<std::vector<int>> ordered_cuts(const Prism& prism, const BlockFaces&
     const std::vector<Eigen::Vector3d> normal = patch_normals(f, surface);
     std::vector<std::pair<double, std::vector<int>>> scored;
     const int n = prism.n;
-    for (const std::vector<int>& side : prism_cut_sides(prism, f.label)) {
+    for (const std::vector<int>& side : prism_cut_sides(prism)) {
         double flat = 0;
         for (int i = 0; i < n; ++i) {
             const int a = side[(i + n - 1) % n], c = side[i];
@@ -250,10 +214,19 @@ bool cut_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int
         if (!prism) continue;
         for (const std::vector<int>& side : ordered_cuts(*prism, v.faces[b], v.surface[b])) {
             const std::vector<int> tri_side = triangle_sides(*prism, v.faces[b], v.surface[b], side, mesh);
-            const Eigen::VectorXi labels = cut_labels(mesh, topo, out, b, v.surface[b], tri_side);
-            auto tried = cut_block(mesh, topo, group, h, options, out, v, b, labels);
+            // The block alone first, unless the cut runs across a face shared with a neighbour
+            // (which would see two faces where it has one); then carried on through the
+            // neighbours whose faces it splits.
+            std::optional<std::pair<BlockDecomposition, Validated>> tried;
+            if (!cuts_a_neighbour_across(*prism, side, v.faces[b].label))
+                tried = cut_block(mesh, topo, group, h, options, out, v, *carry_cut(mesh, topo, out, v, b, tri_side, 1, false));
+            std::optional<CarriedCut> carried;
+            if (!tried && (carried = carry_cut(mesh, topo, out, v, b, tri_side, kMaxCutBlocks)) &&
+                carried->blocks.size() > 1)
+                tried = cut_block(mesh, topo, group, h, options, out, v, *carried);
             if (!tried) continue;
             out = std::move(tried->first), v = std::move(tried->second), ++out.prism_cuts;
+            out.carried_cuts += carried.has_value();  // reached only when the carried cut was kept
             return true;
         }
         failed.insert(name);

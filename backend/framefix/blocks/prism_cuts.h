@@ -22,7 +22,11 @@ std::optional<Prism> prism_of(const BlockFaces& faces, const BlockInfo& info, in
 // Which side of a cut each lateral face of a prism falls on: 0, 1, or 2 for the one face cut
 // across its middle. A cut runs from one lateral edge to another (even n) or to the middle of a
 // lateral face (odd n).
-std::vector<std::vector<int>> prism_cut_sides(const Prism& prism, const std::vector<int>& face_label);
+std::vector<std::vector<int>> prism_cut_sides(const Prism& prism);
+
+// Whether the lateral face a cut runs across (side 2) is shared with another block, which the cut
+// then splits too.
+bool cuts_a_neighbour_across(const Prism& prism, const std::vector<int>& side, const std::vector<int>& face_label);
 
 // Each block that is an n-gonal prism (caps of 5 to 8 corners) is cut into hexahedra, one cut
 // per round, where the blocks then have more valid blocks, no valid block lost and no more

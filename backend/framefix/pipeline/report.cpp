@@ -198,6 +198,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"ring_cuts", b.ring_cuts},
             {"joined_blocks", b.joined_blocks},
             {"prism_cuts", b.prism_cuts},
+            {"carried_cuts", b.carried_cuts},
             {"triangle_folds", b.triangle_folds},
             {"junction_tries", junction_tries},
             {"junction_mode", b.junction_mode},

@@ -62,27 +62,33 @@ TEST(PrismCuts, AHexagonIsCutBetweenOppositeEdgesIntoTwoQuads) {
     const PrismFaces p = prism_faces(6);
     const std::optional<Prism> prism = prism_of(p.faces, p.info);
     ASSERT_TRUE(prism);
-    const auto cuts = prism_cut_sides(*prism, p.faces.label);
+    const auto cuts = prism_cut_sides(*prism);
     EXPECT_EQ(cuts.size(), 3u);  // three pairs of opposite lateral edges
     for (const std::vector<int>& side : cuts)
         EXPECT_EQ(std::count(side.begin(), side.end(), 0), 3);  // three faces and the cut on each side
 }
 
-TEST(PrismCuts, AnOddPrismIsCutAcrossALateralFaceOnThePartsBoundaryOnly) {
+TEST(PrismCuts, AnOddPrismIsCutAcrossALateralFaceWhichMayBeANeighbours) {
     PrismFaces p = prism_faces(5);
     p.faces.label = {3, 4, 5, 6, 7, -1, -1};  // every lateral face shared with another block
     std::optional<Prism> prism = prism_of(p.faces, p.info);
     ASSERT_TRUE(prism);
-    EXPECT_TRUE(prism_cut_sides(*prism, p.faces.label).empty());
+    const auto cuts = prism_cut_sides(*prism);
+    ASSERT_EQ(cuts.size(), 5u) << "one from each lateral edge";
+    for (const std::vector<int>& side : cuts) {
+        EXPECT_EQ(std::count(side.begin(), side.end(), 2), 1);
+        EXPECT_EQ(std::count(side.begin(), side.end(), 0), 2);  // two faces, half of the third and the cut
+        EXPECT_EQ(std::count(side.begin(), side.end(), 1), 2);
+        EXPECT_TRUE(cuts_a_neighbour_across(*prism, side, p.faces.label));
+    }
     p.faces.label[2] = -1;  // lateral 2 on the part's boundary
-    prism = prism_of(p.faces, p.info);
-    const auto cuts = prism_cut_sides(*prism, p.faces.label);
-    ASSERT_EQ(cuts.size(), 1u);
-    const std::vector<int>& side = cuts[0];
-    for (int i = 0; i < 5; ++i)
-        EXPECT_EQ(side[i] == 2, prism->laterals[i] == 2) << i;  // only that face is cut across
-    EXPECT_EQ(std::count(side.begin(), side.end(), 0), 2);  // two faces, half of the third and the cut
-    EXPECT_EQ(std::count(side.begin(), side.end(), 1), 2);
+    int alone = 0;
+    for (const std::vector<int>& side : cuts)
+        if (!cuts_a_neighbour_across(*prism, side, p.faces.label)) {
+            ++alone;
+            for (int i = 0; i < 5; ++i) EXPECT_EQ(side[i] == 2, prism->laterals[i] == 2) << i;
+        }
+    EXPECT_EQ(alone, 1) << "only the cut across lateral 2 leaves the neighbours whole";
 }
 
 }  // namespace
