@@ -10,6 +10,8 @@
 #include <set>
 #include <utility>
 
+#include "framefix/mesh/keys.h"
+
 namespace framefix {
 namespace {
 
@@ -20,13 +22,7 @@ constexpr double kSplitFraction = 0.1;
 // with the entry face do; below, the cut crosses it.
 constexpr double kWholeFraction = 0.8;
 
-using Key = std::array<int, 3>;
-
-Key sorted_key(const Eigen::Vector3i& v) {
-    Key k{v[0], v[1], v[2]};
-    std::sort(k.begin(), k.end());
-    return k;
-}
+TriangleKey key_of(const Eigen::Vector3i& v) { return triangle_key(v[0], v[1], v[2]); }
 
 // Per boundary triangle of a block: the block's tet under it and the tet across (-1: none).
 struct Under {
@@ -35,14 +31,14 @@ struct Under {
 
 Under tets_under(const TetTopology& topo, const BlockDecomposition& out, const std::vector<BoundaryTriangle>& surface,
                  int b) {
-    std::map<Key, int> index;
-    for (size_t i = 0; i < surface.size(); ++i) index[sorted_key(surface[i].verts)] = int(i);
+    std::map<TriangleKey, int> index;
+    for (size_t i = 0; i < surface.size(); ++i) index[key_of(surface[i].verts)] = int(i);
     Under u{std::vector<int>(surface.size(), -1), std::vector<int>(surface.size(), -1)};
     for (int t : out.blocks[b].tets)
         for (int k = 0; k < 4; ++k) {
             const int f = topo.tet_faces(t, k), a = tet_across(topo, f, t);
             if (a >= 0 && out.tet_block[a] == b) continue;
-            const auto it = index.find(sorted_key(topo.faces.row(f).transpose()));
+            const auto it = index.find(key_of(topo.faces.row(f).transpose()));
             if (it != index.end()) u.tet[size_t(it->second)] = t, u.across[size_t(it->second)] = a;
         }
     return u;
@@ -198,17 +194,20 @@ bool same_sides_across(const BlockFaces& f, const Under& under, int from, const 
 
 }  // namespace
 
-std::optional<CarriedCut> carry_cut(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& out,
-                                    const Validated& v, int b, const std::vector<int>& tri_side, int max_blocks,
-                                    bool carry) {
+CarriedCut cut_alone(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& out, const Validated& v,
+                     int b, const std::vector<int>& tri_side) {
     CarriedCut cut{std::vector<signed char>(size_t(mesh.num_tets()), -1), {b}};
+    split_block(mesh, topo, out, b, v.surface[b], tets_under(topo, out, v.surface[b], b), tri_side, cut.side);
+    return cut;
+}
+
+std::optional<CarriedCut> carry_cut(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& out,
+                                    const Validated& v, int b, const std::vector<int>& tri_side, int max_blocks) {
+    CarriedCut cut = cut_alone(mesh, topo, out, v, b, tri_side);
     std::vector<char> in(size_t(out.count), 0);
     in[size_t(b)] = 1;
-    const Under under = tets_under(topo, out, v.surface[b], b);
-    split_block(mesh, topo, out, b, v.surface[b], under, tri_side, cut.side);
     std::queue<std::pair<int, int>> todo;  // (block, the cut block it is entered from)
-    if (!carry) return cut;
-    for (int n : split_neighbours(v.faces[b], under, cut.side)) todo.push({n, b});
+    for (int n : split_neighbours(v.faces[b], tets_under(topo, out, v.surface[b], b), cut.side)) todo.push({n, b});
     while (!todo.empty()) {
         const auto [n, from] = todo.front();
         todo.pop();

@@ -218,10 +218,8 @@ bool cut_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int
             // (which would see two faces where it has one); then carried on through the
             // neighbours whose faces it splits.
             std::optional<std::pair<BlockDecomposition, Validated>> tried;
-            if (!cuts_a_neighbour_across(*prism, side, v.faces[b].label)) {
-                const CarriedCut alone = *carry_cut(mesh, topo, out, v, b, tri_side, 1, false);
-                tried = cut_block(mesh, topo, group, h, options, out, v, alone);
-            }
+            if (!cuts_a_neighbour_across(*prism, side, v.faces[b].label))
+                tried = cut_block(mesh, topo, group, h, options, out, v, cut_alone(mesh, topo, out, v, b, tri_side));
             std::optional<CarriedCut> carried;
             if (!tried && (carried = carry_cut(mesh, topo, out, v, b, tri_side, kMaxCutBlocks)) &&
                 carried->blocks.size() > 1)
