@@ -137,6 +137,8 @@ void bind_blocks(py::module_& m) {
                       "meridian sheets across rings (blocks that were solid tori, as a tube)")
         .def_readonly("joined_blocks", &BlockDecomposition::joined_blocks,
                       "invalid blocks of fewer than 6 faces joined to a neighbour, making a hexahedron")
+        .def_readonly("split_blocks", &BlockDecomposition::split_blocks,
+                      "invalid blocks of fewer than 6 faces shared between two neighbours, making both hexahedra")
         .def_readonly("prism_cuts", &BlockDecomposition::prism_cuts,
                       "invalid prism blocks (5 to 8 faces around) cut into hexahedra")
         .def_readonly("carried_cuts", &BlockDecomposition::carried_cuts,

@@ -39,6 +39,9 @@ struct BlockOptions {
     // Rounds of "an invalid block of fewer than 6 faces joins a neighbour when the two together
     // are a hexahedron and the blocks score better" (0 = off; docs/algorithms.md#under-faced-blocks).
     int join_rounds = 10;
+    // Within those rounds: "where no single neighbour makes one, the block is shared between two
+    // of its largest contacts, each tet to the nearer" (docs/algorithms.md#under-faced-blocks).
+    bool split_wedges = true;
     // Cuts of "an invalid block that is a pentagonal to octagonal prism is cut into hexahedra
     // where the blocks then have more valid blocks and no more non-conforming pairs" (0 = off;
     // docs/algorithms.md#prism-cuts).
@@ -174,6 +177,8 @@ struct BlockDecomposition {
     int ring_cuts = 0;
     // Under-faced blocks joined to a neighbour (docs/algorithms.md#under-faced-blocks).
     int joined_blocks = 0;
+    // Under-faced blocks shared between two neighbours (docs/algorithms.md#under-faced-blocks).
+    int split_blocks = 0;
     // Prism blocks cut into hexahedra (docs/algorithms.md#prism-cuts).
     int prism_cuts = 0;
     // Of those, the cuts carried on through the neighbours whose faces they split

@@ -2,15 +2,22 @@
 #include "framefix/blocks/join_blocks.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <optional>
 #include <set>
 #include <tuple>
 #include <utility>
 
+#include "framefix/blocks/carried_cuts.h"
 #include "framefix/blocks/partition.h"
 
 namespace framefix {
 namespace {
+
+// A wedge is shared between two of its this many largest contacts: the two sheets that cut it off.
+constexpr size_t kSplitContacts = 3;
+
+using Tried = std::optional<std::pair<BlockDecomposition, Validated>>;
 
 // Invalid blocks of fewer than 6 faces, smallest first: wedges and slivers a sheet cut off a
 // block (no hexahedron has fewer faces).
@@ -44,15 +51,15 @@ bool hopeless_join(const TetMesh& mesh, const TetTopology& topo, const std::vect
     return !joined.valid && joined.manifold && joined.euler == 2 && joined.faces < 6;
 }
 
-// Block ids of `out` and of `tried` (out with `from` joined to `into`) mapped both ways; the
-// joined block has no earlier counterpart.
+// Block ids of `out` and of `tried` (out with `from`'s tets given to the blocks `into`) mapped
+// both ways; the blocks that took tets have no earlier counterpart.
 EarlierBlocks map_earlier(const BlockDecomposition& out, const Validated& v, const BlockDecomposition& tried, int from,
-                          int into) {
+                          const std::vector<int>& into) {
     EarlierBlocks earlier{out, v, std::vector<int>(tried.count, -1), std::vector<int>(out.count, -1)};
     for (int b = 0; b < out.count; ++b) {
         const int n = tried.tet_block[out.blocks[b].tets.front()];
         earlier.new_of_old[b] = n;
-        if (b != from && b != into) earlier.old_of_new[n] = b;
+        if (b != from && std::find(into.begin(), into.end(), b) == into.end()) earlier.old_of_new[n] = b;
     }
     return earlier;
 }
@@ -65,19 +72,21 @@ std::vector<char> near_blocks(const BlockDecomposition& out, int from) {
     return near;
 }
 
-// `out` relabelled as `labels` (block `from` moved into block `into`), cleaned where `near`
-// flags and validated again; none when the block that took its tets is no hexahedron.
-std::optional<std::pair<BlockDecomposition, Validated>> relabelled_blocks(
+// `out` relabelled as `labels` (block `from` moved into the blocks `into`), cleaned where `near`
+// flags and validated again; none when a block that took its tets is no hexahedron.
+Tried relabelled_blocks(
     const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h, const BlockOptions& options,
     const BlockDecomposition& out, const Validated& v, Eigen::VectorXi labels, const std::vector<char>& near, int from,
-    int into) {
+    const std::vector<int>& into) {
     BlockDecomposition tried = out;
     tried.tet_block = clean_staircase(mesh, topo, std::move(labels), near);
     tried.count = compact_labels(tried.tet_block);
     Validated w = collect_boundaries(mesh, topo, group, tried);
-    BlockInfo joined;
-    validate_block(mesh, w.surface[tried.tet_block[out.blocks[into].tets.front()]], h, options, joined);
-    if (!joined.valid && joined.faces < 6) return std::nullopt;  // dissolving contacts only removes faces
+    for (int b : into) {
+        BlockInfo joined;
+        validate_block(mesh, w.surface[tried.tet_block[out.blocks[b].tets.front()]], h, options, joined);
+        if (!joined.valid && joined.faces < 6) return std::nullopt;  // dissolving contacts only removes faces
+    }
     const EarlierBlocks earlier = map_earlier(out, v, tried, from, into);  // the others keep their results
     validate_collected(mesh, h, options, tried, w, &earlier);
     // Every block that took `from`'s tets must be a hexahedron: the cleaning may hand some to a
@@ -90,49 +99,96 @@ std::optional<std::pair<BlockDecomposition, Validated>> relabelled_blocks(
 }
 
 // `out` with block `from` joined to block `into`; none when the joined block is no hexahedron.
-std::optional<std::pair<BlockDecomposition, Validated>> joined_blocks(const TetMesh& mesh, const TetTopology& topo,
-                                                       const std::vector<int>& group, double h,
-                                                       const BlockOptions& options, const BlockDecomposition& out,
-                                                       const Validated& v, int from, int into) {
+Tried joined_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                    const BlockOptions& options, const BlockDecomposition& out, const Validated& v, int from, int into) {
     if (hopeless_join(mesh, topo, group, h, options, out, from, into)) return std::nullopt;
     Eigen::VectorXi labels = out.tet_block;
     for (int t : out.blocks[from].tets) labels[t] = into;
     std::vector<char> near = near_blocks(out, from);
     for (int n : out.blocks[into].neighbours) near[n] = 1;
-    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near, from, into);
+    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near, from, {into});
 }
 
-// A pair of blocks named by their first tets and sizes, so that a try that failed is not
-// repeated while both blocks stay as they were.
-using BlockPairName = std::tuple<int, int, int, int>;
-BlockPairName pair_name(const BlockDecomposition& out, int b, int o) {
-    return {out.blocks[b].tets.front(), int(out.blocks[b].tets.size()), out.blocks[o].tets.front(),
-            int(out.blocks[o].tets.size())};
+// Blocks named by their first tets and sizes, so that a try that failed is not repeated while
+// its blocks stay as they were.
+using BlocksName = std::vector<int>;
+BlocksName blocks_name(const BlockDecomposition& out, std::initializer_list<int> blocks) {
+    BlocksName name;
+    for (int b : blocks) name.push_back(out.blocks[b].tets.front()), name.push_back(int(out.blocks[b].tets.size()));
+    return name;
 }
 
-// One join of an under-faced block to a neighbour that gives better blocks, into `out`. False if none does.
+// The neighbours block b shares the most boundary triangles with, most first, at most `count`.
+std::vector<int> largest_contacts(const Validated& v, int b, size_t count) {
+    std::vector<std::pair<int, int>> by_size;  // (-triangles, neighbour)
+    for (auto [n, k] : v.shared[b]) by_size.push_back({-k, n});
+    std::sort(by_size.begin(), by_size.end());
+    std::vector<int> out;
+    for (size_t i = 0; i < std::min(count, by_size.size()); ++i) out.push_back(by_size[i].second);
+    return out;
+}
+
+// `tried` into `out` when it scores better; else its name goes to `failed`.
+bool keep_better(Tried tried, const BlocksName& name, BlockDecomposition& out, Validated& v,
+                 std::set<BlocksName>& failed) {
+    if (!tried || !(score(tried->first) > score(out))) {
+        failed.insert(name);
+        return false;
+    }
+    out = std::move(tried->first), v = std::move(tried->second);
+    return true;
+}
+
+// One join of an under-faced block to a neighbour that gives better blocks, into `out`; else one
+// split of such a block between two of its largest contacts. False if none does.
 bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
-              const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlockPairName>& failed) {
+              const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlocksName>& failed) {
     for (int b : under_faced_blocks(out))
         for (int o : out.blocks[b].neighbours) {
-            const BlockPairName name = pair_name(out, b, o);
-            if (failed.count(name)) continue;
-            auto tried = joined_blocks(mesh, topo, group, h, options, out, v, b, o);
-            if (!tried || !(score(tried->first) > score(out))) {
-                failed.insert(name);
-                continue;
-            }
-            out = std::move(tried->first), v = std::move(tried->second), ++out.joined_blocks;
-            return true;
+            const BlocksName name = blocks_name(out, {b, o});
+            if (!failed.count(name) &&
+                keep_better(joined_blocks(mesh, topo, group, h, options, out, v, b, o), name, out, v, failed))
+                return ++out.joined_blocks, true;
         }
+    if (!options.split_wedges) return false;
+    for (int b : under_faced_blocks(out)) {
+        const std::vector<int> c = largest_contacts(v, b, kSplitContacts);
+        for (size_t i = 0; i < c.size(); ++i)
+            for (size_t j = i + 1; j < c.size(); ++j) {
+                const BlocksName name = blocks_name(out, {b, c[i], c[j]});
+                if (!failed.count(name) &&
+                    keep_better(split_between(mesh, topo, group, h, options, out, v, b, c[i], c[j]), name, out, v, failed))
+                    return ++out.split_blocks, true;
+            }
+    }
     return false;
 }
 
 }  // namespace
 
+// Two sheets that should be one, crossing at an angle, cut a wedge off between them; the split
+// leaves one sheet in their middle.
+Tried split_between(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+                    const BlockOptions& options, const BlockDecomposition& out, const Validated& v, int from, int a,
+                    int b) {
+    const BlockFaces& f = v.faces[from];
+    std::vector<int> tri_side(v.surface[from].size(), -1);
+    for (size_t i = 0; i < tri_side.size(); ++i) {
+        const int across = f.label[size_t(f.patch[i])];
+        tri_side[i] = across == a ? 0 : across == b ? 1 : -1;
+    }
+    const CarriedCut cut = cut_alone(mesh, topo, out, v, from, tri_side);
+    Eigen::VectorXi labels = out.tet_block;
+    for (int t : out.blocks[from].tets) labels[t] = cut.side[size_t(t)] == 0 ? a : b;
+    std::vector<char> near = near_blocks(out, from);
+    for (int x : {a, b})
+        for (int n : out.blocks[x].neighbours) near[n] = 1;
+    return relabelled_blocks(mesh, topo, group, h, options, out, v, std::move(labels), near, from, {a, b});
+}
+
 void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
                       const BlockOptions& options, BlockDecomposition& out, Validated& v) {
-    std::set<BlockPairName> failed;
+    std::set<BlocksName> failed;
     for (int round = 0; round < options.join_rounds && join_one(mesh, topo, group, h, options, out, v, failed); ++round) {
     }
 }

@@ -197,6 +197,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},
             {"joined_blocks", b.joined_blocks},
+            {"split_blocks", b.split_blocks},
             {"prism_cuts", b.prism_cuts},
             {"carried_cuts", b.carried_cuts},
             {"triangle_folds", b.triangle_folds},

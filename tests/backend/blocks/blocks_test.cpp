@@ -297,8 +297,9 @@ RunResult corrected(const std::string& name, double factor) {
 }
 
 BlockDecomposition blocks_of(const RunResult& r, bool try_glued, int join_rounds = BlockOptions{}.join_rounds,
-                             int prism_rounds = BlockOptions{}.prism_rounds) {
+                             int prism_rounds = BlockOptions{}.prism_rounds, bool split_wedges = true) {
     BlockOptions o;
+    o.split_wedges = split_wedges;
     o.try_glued = try_glued;
     o.join_rounds = join_rounds;
     o.prism_rounds = prism_rounds;
@@ -346,6 +347,20 @@ TEST(BlocksOnSamples, WedgesCutOffABlockJoinTheNeighbourTheyMakeAHexahedronWith)
     EXPECT_GE(joined.valid, apart.valid);  // each join makes a hexahedron: no valid block is lost
     EXPECT_GT(2 * joined.valid - joined.count, 2 * apart.valid - apart.count);
     expect_partition(r.mesh->tets, r.mesh->topology, joined);
+}
+
+TEST(BlocksOnSamples, AWedgeNoNeighbourTakesIsSharedBetweenTwo) {
+    // The narrow groove: a 5-faced wedge that no single neighbour makes a hexahedron with; shared
+    // between two, both are hexahedra, and a 7-faced block beside it is one too.
+    const RunResult r = corrected("groove_narrow", 1);
+    const BlockDecomposition split = blocks_of(r, true), apart = blocks_of(r, true, 10, 20, false);
+    EXPECT_EQ(apart.split_blocks, 0);
+    ASSERT_GT(split.split_blocks, 0);
+    EXPECT_LT(under_faced(split), under_faced(apart));
+    EXPECT_GE(split.valid, apart.valid);
+    EXPECT_LT(split.count - split.valid, apart.count - apart.valid);
+    EXPECT_GE(split.conforming_pairs - split.pairs, apart.conforming_pairs - apart.pairs);
+    expect_partition(r.mesh->tets, r.mesh->topology, split);
 }
 
 TEST(BlocksOnSamples, PrismBlocksAreCutIntoHexahedra) {
