@@ -100,7 +100,8 @@ Tried relabelled_blocks(
 
 // `out` with block `from` joined to block `into`; none when the joined block is no hexahedron.
 Tried joined_blocks(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
-                    const BlockOptions& options, const BlockDecomposition& out, const Validated& v, int from, int into) {
+                    const BlockOptions& options, const BlockDecomposition& out, const Validated& v, int from,
+                    int into) {
     if (hopeless_join(mesh, topo, group, h, options, out, from, into)) return std::nullopt;
     Eigen::VectorXi labels = out.tet_block;
     for (int t : out.blocks[from].tets) labels[t] = into;
@@ -139,8 +140,8 @@ bool keep_better(Tried tried, const BlocksName& name, BlockDecomposition& out, V
     return true;
 }
 
-// One join of an under-faced block to a neighbour that gives better blocks, into `out`; else one
-// split of such a block between two of its largest contacts. False if none does.
+// One join of an under-faced block to a neighbour that gives better blocks, into `out`. False if
+// none does.
 bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
               const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlocksName>& failed) {
     for (int b : under_faced_blocks(out))
@@ -150,15 +151,25 @@ bool join_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<in
                 keep_better(joined_blocks(mesh, topo, group, h, options, out, v, b, o), name, out, v, failed))
                 return ++out.joined_blocks, true;
         }
-    if (!options.split_wedges) return false;
+    return false;
+}
+
+// One split of an under-faced block between two of its largest contacts that gives better
+// blocks, into `out`. False if none does.
+bool split_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
+               const BlockOptions& options, BlockDecomposition& out, Validated& v, std::set<BlocksName>& failed) {
     for (int b : under_faced_blocks(out)) {
         const std::vector<int> c = largest_contacts(v, b, kSplitContacts);
         for (size_t i = 0; i < c.size(); ++i)
             for (size_t j = i + 1; j < c.size(); ++j) {
                 const BlocksName name = blocks_name(out, {b, c[i], c[j]});
-                if (!failed.count(name) &&
-                    keep_better(split_between(mesh, topo, group, h, options, out, v, b, c[i], c[j]), name, out, v, failed))
-                    return ++out.split_blocks, true;
+                // Two sheets that should be one have hexahedra on their far sides; sharing a
+                // wedge with a block that is no hexahedron rarely makes one, and each try costs a
+                // validation of the blocks.
+                if (!out.blocks[c[i]].valid || !out.blocks[c[j]].valid) continue;
+                if (failed.count(name)) continue;
+                Tried tried = split_between(mesh, topo, group, h, options, out, v, b, c[i], c[j]);
+                if (keep_better(std::move(tried), name, out, v, failed)) return ++out.split_blocks, true;
             }
     }
     return false;
@@ -189,8 +200,10 @@ Tried split_between(const TetMesh& mesh, const TetTopology& topo, const std::vec
 void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
                       const BlockOptions& options, BlockDecomposition& out, Validated& v) {
     std::set<BlocksName> failed;
-    for (int round = 0; round < options.join_rounds && join_one(mesh, topo, group, h, options, out, v, failed); ++round) {
-    }
+    for (int round = 0; round < options.join_rounds; ++round)
+        if (!join_one(mesh, topo, group, h, options, out, v, failed) &&
+            !(options.split_wedges && split_one(mesh, topo, group, h, options, out, v, failed)))
+            break;
 }
 
 }  // namespace framefix

@@ -9,15 +9,17 @@
 namespace framefix {
 
 // Each invalid block of fewer than 6 faces (a wedge a sheet cut off) joins the neighbour it
-// makes a hexahedron with, or else is shared between two of its three largest contacts, where the
-// blocks then score better; greedy, one change per round, at most options.join_rounds. `group`: the surface group of every topology face. Updates `out`
-// (joined_blocks) and its validation `v`.
+// makes a hexahedron with, or else is shared between two of its three largest contacts that are
+// valid hexahedra, where the blocks then score better; greedy, one change per round, at most
+// options.join_rounds. `group`: the surface group of every topology face. Updates `out`
+// (joined_blocks, split_blocks) and its validation `v`.
 void join_under_faced(const TetMesh& mesh, const TetTopology& topo, const std::vector<int>& group, double h,
                       const BlockOptions& options, BlockDecomposition& out, Validated& v);
 
 // `out` with block `from` shared between its neighbours a and b, each tet to the one whose shared
 // face is nearer through the block, cleaned and validated again; none when a or b is then no
-// hexahedron. Tried by join_under_faced where no single neighbour takes a block.
+// hexahedron. Tried by join_under_faced, between two valid hexahedra, where no single neighbour
+// takes a block.
 std::optional<std::pair<BlockDecomposition, Validated>> split_between(const TetMesh& mesh, const TetTopology& topo,
                                                                       const std::vector<int>& group, double h,
                                                                       const BlockOptions& options,
