@@ -37,6 +37,12 @@ ThinFaces thin_block_faces(const TetMesh& mesh, const SingularityGraph& graph, c
 // the finer edges deep over each finer face (TetGen's grading spreads the rest).
 double estimate_thin_tets(const TetMesh& mesh, const ThinFaces& thin);
 
+// Whether a finer run's blocks replace the first run's: fewer 3-5 curves plus invalid nodes first
+// (blocks all valid and conforming around a 3-5 curve are no hex mesh: notch_shallow at 1.5 x),
+// then all valid and conforming, then valid minus invalid blocks, then conforming minus other
+// pairs.
+bool finer_run_better(const RunResult& finer, const RunResult& first);
+
 // After the blocks stage of `r` (run with `options`): when its blocks are not all valid and
 // conforming, its graph is hex-meshable and thin_block_faces finds thin places next to invalid
 // blocks within the tet budget (at most 6 x the tets), the whole run again from the mesh stage

@@ -16,11 +16,9 @@ namespace {
 
 bool all_good(const BlockDecomposition& b) { return b.valid == b.count && b.conforming_pairs == b.pairs; }
 
-// Better blocks: all valid and conforming first, then fewer 3-5 curves plus invalid nodes, then
-// valid minus invalid blocks, then conforming minus other pairs.
 auto block_score(const RunResult& r) {
     const BlockDecomposition& b = *r.blocks;
-    return std::make_tuple(all_good(b), -detail::defects(r.singularities->summary), 2 * b.valid - b.count,
+    return std::make_tuple(-detail::defects(r.singularities->summary), all_good(b), 2 * b.valid - b.count,
                            2 * b.conforming_pairs - b.pairs);
 }
 
@@ -62,6 +60,8 @@ BlockDecomposition blocks_without_glued(const RunOptions& o, const RunResult& r)
 }
 
 }  // namespace
+
+bool finer_run_better(const RunResult& finer, const RunResult& first) { return block_score(finer) > block_score(first); }
 
 ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     ThinRefinement t;
@@ -116,7 +116,7 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     t.tets_after = f.mesh->tets.num_tets();
     t.count_after = f.blocks->count, t.valid_after = f.blocks->valid;
     t.pairs_after = f.blocks->pairs, t.conforming_after = f.blocks->conforming_pairs;
-    t.kept = block_score(f) > block_score(r);
+    t.kept = finer_run_better(f, r);
     t.reason = t.kept ? "blocks thinner than " + std::to_string(int(kResolvedThicknessH)) + " h next to " +
                             std::to_string(t.faces) + " faces"
                       : "the finer mesh's blocks are not better";

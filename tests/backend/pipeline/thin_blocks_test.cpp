@@ -126,5 +126,23 @@ TEST(ThinBlocks, OnlySheetsParallelToTheWallMakeACushion) {
     EXPECT_TRUE(thin_block_faces(m, none, square(false), kH).face_size.empty());
 }
 
+// A run holding only what the choice between a first and a finer run reads.
+RunResult scored_run(int curves_3_5, int count, int valid, int pairs, int conforming) {
+    RunResult r;
+    r.singularities.emplace();
+    r.singularities->summary.curves_3_5 = curves_3_5;
+    r.blocks.emplace();
+    r.blocks->count = count, r.blocks->valid = valid, r.blocks->pairs = pairs, r.blocks->conforming_pairs = conforming;
+    return r;
+}
+
+TEST(ThinBlocks, AFinerRunIsKeptForBetterBlocksButNeverWithA35CurveTheFirstRunHasNot) {
+    const RunResult first = scored_run(0, 7, 7, 9, 8);
+    EXPECT_TRUE(finer_run_better(scored_run(0, 7, 7, 9, 9), first));
+    EXPECT_FALSE(finer_run_better(scored_run(0, 7, 6, 9, 9), first));
+    EXPECT_FALSE(finer_run_better(scored_run(1, 6, 6, 8, 8), first)) << "all valid and conforming, round a 3-5 curve";
+    EXPECT_TRUE(finer_run_better(scored_run(0, 8, 6, 9, 6), scored_run(1, 6, 6, 8, 8)));
+}
+
 }  // namespace
 }  // namespace framefix
