@@ -44,9 +44,13 @@ void check_inputs(const TetMesh& mesh, const TetTopology& topo, const FrameField
 }
 
 // Each block with at most 3 faces joins the neighbour it shares the most boundary triangles with
-// (a non-lens one first). True if any block changed.
+// (a non-lens one first); a ring of 3 faces is left to the ring cuts (docs/algorithms.md#lenses).
+// True if any block changed.
 bool merge_lenses(const std::vector<std::map<int, int>>& shared, BlockDecomposition& out) {
-    auto lens = [&](int b) { return out.blocks[b].faces <= 3 && !out.blocks[b].neighbours.empty(); };
+    auto lens = [&](int b) {
+        const BlockInfo& i = out.blocks[b];
+        return i.faces <= 3 && !i.neighbours.empty() && !(i.manifold && i.euler == 0 && i.faces == 3);
+    };
     std::vector<int> into(out.count, -1);
     for (int b = 0; b < out.count; ++b) {
         if (!lens(b)) continue;
@@ -325,7 +329,8 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     const TetLocator locator(mesh, topo);
 
     // Sheets.
-    std::vector<SheetSource> sources = singular_sources(mesh, field, graph, locator, h, options);
+    out.boundary_wisps = boundary_wisps(graph, h);
+    std::vector<SheetSource> sources = singular_sources(mesh, field, graph, locator, h, options, out.boundary_wisps);
     const std::vector<int> imprints = followed_imprints(mesh, features, field);
     for (const EdgeFeature& e : features.edges)
         if (e.valence == 2 && !ambiguous_edge(e) && !std::binary_search(imprints.begin(), imprints.end(), e.edge))

@@ -130,9 +130,18 @@ std::vector<SheetSource> ring_sources(const TetMesh& mesh, const FrameField& fie
                                       const std::vector<std::vector<BoundaryTriangle>>& surface, double h,
                                       const TraceOptions& trace) {
     std::vector<SheetSource> out;
-    for (int b = 0; b < blocks.count; ++b) {
+    std::vector<int> rings;
+    for (int b = 0; b < blocks.count; ++b)
+        if (blocks.blocks[size_t(b)].manifold && blocks.blocks[size_t(b)].euler == 0) rings.push_back(b);
+    // Largest first; a ring next to one already cut goes round the same hole, and the meridians,
+    // which run to the boundary both ways, cut it too (the torus's core ring and the four around it).
+    std::stable_sort(rings.begin(), rings.end(), [&](int a, int b) {
+        return blocks.blocks[size_t(a)].tets.size() > blocks.blocks[size_t(b)].tets.size();
+    });
+    std::vector<char> covered(size_t(blocks.count), 0);
+    for (int b : rings) {
         const BlockInfo& info = blocks.blocks[size_t(b)];
-        if (!info.manifold || info.euler != 0) continue;
+        if (covered[size_t(b)]) continue;
         const int v = deepest_vertex(mesh, info, surface[size_t(b)]);
         if (v < 0) continue;
         const Eigen::Vector3d p = mesh.points.row(v).transpose();
@@ -145,6 +154,7 @@ std::vector<SheetSource> ring_sources(const TetMesh& mesh, const FrameField& fie
             SheetSource src = meridian(mesh, field, locator, q, t, h, trace, "ring:" + std::to_string(b));
             if (src.seeds.size() >= 2) out.push_back(std::move(src));
         }
+        for (int o : info.neighbours) covered[size_t(o)] = 1;
     }
     return out;
 }

@@ -136,8 +136,22 @@ std::vector<char> convex_paths(const TetMesh& mesh, const FeatureSet& features, 
     return out;
 }
 
+std::vector<int> boundary_wisps(const SingularityGraph& graph, double h) {
+    auto on_boundary = [&](int node) { return node >= 0 && node < int(graph.nodes.size()) && graph.nodes[node].boundary; };
+    std::vector<int> out;
+    for (const SingularCurve& c : graph.curves) {
+        if (c.closed || !on_boundary(c.ends[0]) || !on_boundary(c.ends[1])) continue;
+        double length = 0;
+        for (int i = 1; i < int(c.points.rows()); ++i) length += (c.points.row(i) - c.points.row(i - 1)).norm();
+        if (length < kWispLength_h * h) out.push_back(c.id);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
-                                          const TetLocator& locator, double h, const BlockOptions& options) {
+                                          const TetLocator& locator, double h, const BlockOptions& options,
+                                          const std::vector<int>& skip) {
     std::vector<SheetSource> out;
     std::vector<int> degree(graph.nodes.size(), 0);  // curves ending at each node
     for (const SingularCurve& c : graph.curves)
@@ -145,6 +159,7 @@ std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField&
             if (c.ends[e] >= 0 && c.ends[e] < int(degree.size())) ++degree[c.ends[e]];
     for (const SingularCurve& c : graph.curves) {
         if (c.kind == CurveKind::Other || c.faces.size() < 3 || c.points.rows() < 2) continue;
+        if (std::binary_search(skip.begin(), skip.end(), c.id)) continue;
         const Points& P = c.points;
         const int n = int(P.rows());
         std::vector<double> arc(n, 0);

@@ -53,11 +53,19 @@ bool straight_through(const std::vector<SheetSource>& sources, int si, int e, in
 // Some junction node has a curve running straight on through it.
 bool has_straight_junction(const std::vector<SheetSource>& sources);
 
-// Singular curves (not kind Other, >= 3 triangles): seeds every seed_spacing h on the polyline,
+// A singular curve from the boundary to the boundary shorter than kWispLength_h h lies within one
+// hex layer of the surface: no hex mesh of this size can follow it, yet its sheets would cut the
+// whole part (the groove after snapping keeps a 0.65 h valence-5 stub where the inner snapped
+// path meets the floor; its five sheets ran through the whole box). Ids of such curves, ascending.
+constexpr double kWispLength_h = 1.0;
+std::vector<int> boundary_wisps(const SingularityGraph& graph, double h);
+
+// Singular curves (not kind Other, >= 3 triangles, not in `skip`, ascending ids): seeds every seed_spacing h on the polyline,
 // directions = zeros of the radial deviation of the closest frame axis on a circle of radius
 // seed_radius h around the curve (valence k gives k zeros; seeds with fewer keep what they find).
 std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
-                                          const TetLocator& locator, double h, const BlockOptions& options);
+                                          const TetLocator& locator, double h, const BlockOptions& options,
+                                          const std::vector<int>& skip = {});
 
 // The curves glued to ambiguous feature curves (SingularityGraph::absorbed) as singular sources
 // with boundary ends, for the blocks that try them (build_blocks): on the anti-pentapyramid the

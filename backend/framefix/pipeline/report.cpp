@@ -191,6 +191,7 @@ json blocks_json(const BlockDecomposition& b) {
             {"flat_corners", b.flat_corners},
             {"flat_edges", b.flat_edges},
             {"ignored_imprints", b.ignored_imprints},
+            {"boundary_wisps", b.boundary_wisps},
             {"joined_edges", b.joined_edges},
             {"glued_sources", b.glued_sources},
             {"convex_paths", b.convex_paths},
