@@ -36,6 +36,9 @@ struct BlockOptions {
     // Rounds of "a block with at most 3 faces (a lens between two sheets that should be one)
     // joins the neighbour it shares the most boundary with" (0 = off).
     int lens_rounds = 10;
+    // Rings of 3 faces (boundary Euler characteristic 0) count as lenses; where one did, the blocks
+    // are also made with them left whole for the ring cuts, and the better kept (build_blocks).
+    bool ring_lenses = true;
     // Rounds of "an invalid block of fewer than 6 faces joins a neighbour when the two together
     // are a hexahedron and the blocks score better" (0 = off; docs/algorithms.md#under-faced-blocks).
     int join_rounds = 10;
@@ -176,6 +179,10 @@ struct BlockDecomposition {
     int curtain_corners = 0;
     // Meridian sheets across rings (blocks that were solid tori: a tube), docs/algorithms.md#ring-cuts.
     int ring_cuts = 0;
+    // Rings of 3 faces that joined a neighbour as lenses while these blocks were made; rings_kept:
+    // these blocks were made with such rings left whole, as they scored better (docs/algorithms.md#lenses).
+    int ring_lenses = 0;
+    bool rings_kept = false;
     // Under-faced blocks joined to a neighbour (docs/algorithms.md#under-faced-blocks).
     int joined_blocks = 0;
     // Under-faced blocks shared between two neighbours (docs/algorithms.md#under-faced-blocks).

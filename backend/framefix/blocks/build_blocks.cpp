@@ -44,13 +44,18 @@ void check_inputs(const TetMesh& mesh, const TetTopology& topo, const FrameField
 }
 
 // Each block with at most 3 faces joins the neighbour it shares the most boundary triangles with
-// (a non-lens one first); a ring of 3 faces is left to the ring cuts (docs/algorithms.md#lenses).
-// True if any block changed.
-bool merge_lenses(const std::vector<std::map<int, int>>& shared, BlockDecomposition& out) {
+// (a non-lens one first). A ring of 3 faces does so only with options.ring_lenses, and is counted
+// in out.ring_lenses (docs/algorithms.md#lenses). True if any block changed.
+bool merge_lenses(const std::vector<std::map<int, int>>& shared, const BlockOptions& options, BlockDecomposition& out) {
+    auto ring = [&](int b) {
+        const BlockInfo& i = out.blocks[b];
+        return i.manifold && i.euler == 0 && i.faces == 3;
+    };
     auto lens = [&](int b) {
         const BlockInfo& i = out.blocks[b];
-        return i.faces <= 3 && !i.neighbours.empty() && !(i.manifold && i.euler == 0 && i.faces == 3);
+        return i.faces <= 3 && !i.neighbours.empty() && (options.ring_lenses || !ring(b));
     };
+    for (int b = 0; b < out.count; ++b) out.ring_lenses += lens(b) && ring(b);
     std::vector<int> into(out.count, -1);
     for (int b = 0; b < out.count; ++b) {
         if (!lens(b)) continue;
@@ -117,7 +122,7 @@ Validated partition_and_validate(const TetMesh& mesh, const TetTopology& topo, c
     out.seconds_partition += since(t1);
     const auto t2 = Clock::now();
     Validated v = validate_blocks(mesh, topo, group, h, options, out);
-    for (int round = 0; round < options.lens_rounds && merge_lenses(v.shared, out); ++round) {
+    for (int round = 0; round < options.lens_rounds && merge_lenses(v.shared, options, out); ++round) {
         out.tet_block = clean_labels(mesh, topo, out.tet_block, options, merge, merged);
         out.count = compact_labels(out.tet_block);
         v = validate_blocks(mesh, topo, group, h, options, out);
@@ -306,6 +311,20 @@ void try_glued_sources(const BlockInputs& in, const SingularityGraph& graph, con
     if (score(with) > score(out)) out = std::move(with), v = std::move(w);
 }
 
+// Where a ring of 3 faces joined a neighbour as a lens, the blocks made again with every such ring
+// left whole for the ring cuts (docs/algorithms.md#lenses), kept when they score better: HexMe's
+// torus has its five rings merged into one block otherwise, and n11o at 1.5 x needs the merge.
+void try_rings_kept(const BlockInputs& in, const std::vector<SheetSource>& sources, const Points& singular,
+                    const BlockDecomposition& common, BlockDecomposition& out, Validated& v) {
+    BlockOptions options = in.options;
+    options.ring_lenses = false;
+    const BlockInputs kept{in.mesh, in.topo, in.features, in.field, in.locator, in.paths, in.group, in.h, options};
+    BlockDecomposition with = common;
+    Validated w = blocks_from_sources(kept, sources, singular, with);
+    with.rings_kept = true;
+    if (score(with) > score(out)) out = std::move(with), v = std::move(w);
+}
+
 }  // namespace
 
 // Per tet: whether its block is invalid or in a non-conforming pair.
@@ -356,6 +375,7 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
     const BlockInputs in{mesh, topo, features, field, locator, paths, group, h, options};
     Validated v = blocks_from_sources(in, sources, singular, out);
     if (options.try_glued && !graph.absorbed.empty()) try_glued_sources(in, graph, sources, singular, common, out, v);
+    if (options.ring_lenses && out.ring_lenses > 0) try_rings_kept(in, sources, singular, common, out, v);
     out.seconds_sheets += source_seconds;
     out.surfaces = block_surfaces(mesh, v.surface, v.faces);
     out.boundary = std::move(v.surface);

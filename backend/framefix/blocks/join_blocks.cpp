@@ -162,11 +162,11 @@ bool split_one(const TetMesh& mesh, const TetTopology& topo, const std::vector<i
         const std::vector<int> c = largest_contacts(v, b, kSplitContacts);
         for (size_t i = 0; i < c.size(); ++i)
             for (size_t j = i + 1; j < c.size(); ++j) {
-                const BlocksName name = blocks_name(out, {b, c[i], c[j]});
                 // Two sheets that should be one have hexahedra on their far sides; sharing a
                 // wedge with a block that is no hexahedron rarely makes one, and each try costs a
                 // validation of the blocks.
                 if (!out.blocks[c[i]].valid || !out.blocks[c[j]].valid) continue;
+                const BlocksName name = blocks_name(out, {b, c[i], c[j]});
                 if (failed.count(name)) continue;
                 Tried tried = split_between(mesh, topo, group, h, options, out, v, b, c[i], c[j]);
                 if (keep_better(std::move(tried), name, out, v, failed)) return ++out.split_blocks, true;

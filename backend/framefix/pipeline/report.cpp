@@ -197,6 +197,8 @@ json blocks_json(const BlockDecomposition& b) {
             {"convex_paths", b.convex_paths},
             {"curtain_corners", b.curtain_corners},
             {"ring_cuts", b.ring_cuts},
+            {"ring_lenses", b.ring_lenses},
+            {"rings_kept", b.rings_kept},
             {"joined_blocks", b.joined_blocks},
             {"split_blocks", b.split_blocks},
             {"prism_cuts", b.prism_cuts},
