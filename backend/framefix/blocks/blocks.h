@@ -164,7 +164,8 @@ struct BlockDecomposition {
     // Imprinted curves (B-rep edge ids, ascending) the field does not follow: they emit no sheet
     // and block faces run across them (the hex mesh will not follow them either).
     std::vector<int> ignored_imprints;
-    std::vector<int> boundary_wisps;  // singular curve ids that emit no sheet: boundary to boundary, < 1 h (sheet_sources.h)
+    // Singular curves (ids) that emit no sheet: boundary to boundary, under 1 h (sheet_sources.h).
+    std::vector<int> boundary_wisps;
     // Ambiguous feature curves (a chamfer's 135 degree edges; B-rep edge ids, ascending) that the
     // block faces run across, chosen so that the blocks are hexahedra
     // (docs/algorithms.md#block-faces-across-ambiguous-edges).
