@@ -61,8 +61,9 @@ constexpr double kWispLength_h = 1.0;
 std::vector<int> boundary_wisps(const SingularityGraph& graph, double h);
 
 // Singular curves (not kind Other, >= 3 triangles, not in `skip`, ascending ids): seeds every
-// seed_spacing h on the polyline, directions = zeros of the radial deviation of the closest frame axis on a circle of radius
-// seed_radius h around the curve (valence k gives k zeros; seeds with fewer keep what they find).
+// seed_spacing h on the polyline, directions = zeros of the radial deviation of the closest frame
+// axis on a circle of radius seed_radius h around the curve (valence k gives k zeros; seeds with
+// fewer keep what they find).
 std::vector<SheetSource> singular_sources(const TetMesh& mesh, const FrameField& field, const SingularityGraph& graph,
                                           const TetLocator& locator, double h, const BlockOptions& options,
                                           const std::vector<int>& skip = {});
