@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "framefix/frame_field/projection.h"
+#include "framefix/singularities/polyline.h"
 #include "framefix/streamlines/feature_seeds.h"
 
 namespace framefix {
@@ -141,9 +142,7 @@ std::vector<int> boundary_wisps(const SingularityGraph& graph, double h) {
     std::vector<int> out;
     for (const SingularCurve& c : graph.curves) {
         if (c.closed || !on_boundary(c.ends[0]) || !on_boundary(c.ends[1])) continue;
-        double length = 0;
-        for (int i = 1; i < int(c.points.rows()); ++i) length += (c.points.row(i) - c.points.row(i - 1)).norm();
-        if (length < kWispLength_h * h) out.push_back(c.id);
+        if (polyline_length(c.points) < kWispLength_h * h) out.push_back(c.id);
     }
     std::sort(out.begin(), out.end());
     return out;
