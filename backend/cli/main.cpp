@@ -125,8 +125,9 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     commands[4].app->add_option("--layers", a.layers, "hexes along the shortest block edge (overrides --hex-size)")
         ->check(CLI::PositiveNumber);
-    commands[4].app->add_flag("--no-refine", a.no_refine, "keep blocks with a flat edge as they are (no three-block template)");
     commands[4].app->add_option("--order", a.order, "1: 8-node hexes (C3D8), 2: 20-node (C3D20)")->check(CLI::Range(1, 2));
+    for (int k : {3, 4})
+        commands[k].app->add_flag("--no-refine", a.no_refine, "keep blocks with a flat edge as they are (no three-block template)");
     for (int k : {3, 4})
         commands[k].app->add_flag("--no-remesh-thin", a.no_remesh_thin,
                                   "keep the mesh when blocks thinner than 3 tet edges come out invalid (no finer mesh next to them)");

@@ -6,6 +6,22 @@ import pytest
 from conftest import SAMPLES, progress_stages, run
 
 
+def cut_figures(b):
+    """(count, valid, conforming pairs, pairs) of the blocks as the sheets cut them."""
+    c = b["before_refinement"]
+    return c["count"], c["valid"], c["conforming_pairs"], c["pairs"]
+
+
+def assert_refined_from_cut(b):
+    """The flat refinement keeps blocks all valid and conforming, and only adds blocks."""
+    f = b["flat_refinement"]
+    assert (b["valid"], b["conforming_pairs"]) == (b["count"], b["pairs"])
+    if f["kept"]:
+        assert b["count"] > b["before_refinement"]["count"] and f["refined"] >= 1
+    else:
+        assert cut_figures(b) == (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) and f["reason"]
+
+
 def block_ids(vtk_path):
     """Block id of every tet, from blocks.vtk's CELL_DATA "block"."""
     lines = vtk_path.read_text().splitlines()
@@ -57,12 +73,20 @@ def test_notch_after_snapping_gives_seven_valid_conforming_blocks(tmp_path):
     assert r["correction"]["before"]["curves_3_5"] == 1
     assert r["correction"]["after"]["curves_3_5"] == 0
     b = r["blocks"]
-    assert (b["count"], b["valid"]) == (7, 7)
-    assert (b["conforming_pairs"], b["pairs"]) == (9, 9)
+    assert cut_figures(b) == (7, 7, 9, 9)
+    # The block under the snapped arc has a flat edge (the paper's Fig. 6b): the template cuts it
+    # in three, with its neighbour along the edge (Fig. 6c), and the flat corners go.
+    f = b["flat_refinement"]
+    assert f["tried"] and f["kept"] and f["refined"] == 1, f["reason"]
+    assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (9, 9, 12, 12)
+    assert b["before_refinement"]["flat_corners"] > 0 and b["flat_corners"] == 0
+    assert len(b["blocks"]) == 9 and sorted(k["id"] for k in b["blocks"]) == list(range(9))
+    ids = block_ids(tmp_path / "blocks.vtk")
+    assert sorted(set(ids)) == list(range(9)) and len(ids) == r["mesh"]["tets"]
     assert {"correct", "blocks"} <= set(r["timings_s"])
     assert progress_stages(err) == ["load", "mesh", "field", "singularities", "correct", "blocks"]
     assert err.splitlines()[-1] == "progress blocks 1.000"
-    assert "7 blocks, all valid, 9/9 pairs conforming" in out
+    assert "9 blocks, all valid, 12/12 pairs conforming (1 block with a flat edge split in three, from 7)" in out
     assert (b["junction_tries"], b["junction_mode"]) == ([], "")  # no interior node where curves meet
 
 
@@ -78,7 +102,8 @@ def test_filleted_notch_gives_the_papers_seven_blocks_through_its_junction_node(
     nodes = [n for n in r["singularities"]["nodes"] if not n["boundary"]]
     assert [(n["n3"], n["n5"], n["valid"]) for n in nodes] == [(1, 3, True)]
     b = r["blocks"]
-    assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (7, 7, 9, 9)
+    assert cut_figures(b) == (7, 7, 9, 9)
+    assert_refined_from_cut(b)
     tries = {t["mode"]: t for t in b["junction_tries"]}
     assert list(tries) == ["continue", "drop", "drop+close", "drop+zip", "drop+close+zip", "continue+close"]
     kept = tries[b["junction_mode"]]
@@ -105,7 +130,8 @@ def test_fillet_correction_of_the_notch_is_cut_into_the_papers_seven_blocks(tmp_
     nodes = [n for n in r["singularities"]["nodes"] if not n["boundary"]]
     assert [(n["n3"], n["n5"], n["valid"]) for n in nodes] == [(1, 3, True)]
     b = r["blocks"]
-    assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (7, 7, 9, 9)
+    assert cut_figures(b) == (7, 7, 9, 9)
+    assert_refined_from_cut(b)
     assert b["junction_mode"] != "continue"
 
 
@@ -141,9 +167,11 @@ def test_rounded_box_thin_cushions_get_a_finer_mesh(tmp_path, factor):
     assert t["faces"] == 26 and t["spots"] > 0 and 0 < t["min_size"] < r["mesh"]["size"]
     assert r["mesh"]["tets"] == t["tets_after"] and t["tets_before"] < t["tets_after"] <= 6 * t["tets_before"]
     assert r["singularities"]["summary"]["valence3"] == 20 and r["singularities"]["summary"]["meshable"]
-    assert b["count"] == 7 and b["valid"] == 7 and (b["conforming_pairs"], b["pairs"]) == (18, 18)
-    cube = max(b["blocks"], key=lambda k: k["volume"])
-    assert sorted(cube["neighbours"]) == sorted(k["id"] for k in b["blocks"] if k is not cube)
+    assert cut_figures(b) == (7, 7, 18, 18)
+    assert_refined_from_cut(b)
+    if not b["flat_refinement"]["kept"]:  # the box and its six cushions
+        cube = max(b["blocks"], key=lambda k: k["volume"])
+        assert sorted(cube["neighbours"]) == sorted(k["id"] for k in b["blocks"] if k is not cube)
     assert "meshed again finer next to 26 faces" in out
     if factor == "1":
         h = r["hexmesh"]

@@ -52,3 +52,5 @@ def test_blocks_are_valid_and_conforming_where_the_graph_is_meshable(tmp_path, n
     invalid = [(k["id"], k["reason"]) for k in b["blocks"] if not k["valid"]]
     assert not invalid, "%d of %d blocks valid: %s" % (b["valid"], b["count"], invalid)
     assert b["conforming_pairs"] == b["pairs"], [p for p in b["neighbour_pairs"] if not p["conforming"]]
+    cut = b["before_refinement"]  # the flat refinement only cuts valid blocks further
+    assert cut["valid"] == cut["count"] <= b["count"] and cut["conforming_pairs"] == cut["pairs"] <= b["pairs"]

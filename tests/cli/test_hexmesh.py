@@ -44,8 +44,9 @@ def test_notch_hex_mesh_files_agree_with_the_report(tmp_path):
     h = r["hexmesh"]
     assert h["done"] and h["inverted"] == 0 and h["min_scaled_jacobian"] > 0
     assert abs(h["volume"] - h["part_volume"]) <= 0.01 * h["part_volume"]
-    assert r["blocks"]["count"] == 7  # as the sheets cut them; the flat-edge block is meshed as three
-    assert len(h["blocks"]) == r["blocks"]["refined"]["count"] == 7 + 2 * h["refinement"]["refined"] == 9
+    assert r["blocks"]["before_refinement"]["count"] == 7  # as the sheets cut them
+    # the flat-edge block, cut in three with its neighbour along the edge, is what the blocks are
+    assert len(h["blocks"]) == r["blocks"]["count"] == r["blocks"]["refined"]["count"] == 7 + 2 * h["refinement"]["refined"] == 9
     assert sum(b["hexes"] for b in h["blocks"]) == h["hexes"]
     types, cells = vtk_cells(tmp_path / "hex.vtk")
     assert types == [12] * h["hexes"] and all(len(c) == 8 for c in cells)
@@ -69,10 +70,13 @@ def test_the_notchs_fillet_correction_is_hex_meshed_through_its_seven_blocks(tmp
     r, err = hexmesh(tmp_path, "notch.step", "--method", "fillet")
     assert r["correction"]["method"] == "fillet" and r["correction"]["kept"]
     b, h = r["blocks"], r["hexmesh"]
-    assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (7, 7, 9, 9)
+    cut = b["before_refinement"]
+    assert (cut["count"], cut["valid"], cut["conforming_pairs"], cut["pairs"]) == (7, 7, 9, 9)
     assert h["done"] and h["inverted"] == 0 and h["min_scaled_jacobian"] > 0
     ref = h["refinement"]
     assert ref["blocks_before"] == 7 and len(h["blocks"]) == ref["blocks"]
+    if b["flat_refinement"]["kept"]:  # the blocks are the hex mesh's
+        assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (ref["blocks"],) * 2 + (ref["pairs"],) * 2
     assert sum(x["hexes"] for x in h["blocks"]) == h["hexes"]
     if ref["kept"]:
         assert ref["blocks"] > 7 and h["min_scaled_jacobian"] > ref["plain_min_scaled_jacobian"]
@@ -179,8 +183,9 @@ def test_flat_edge_refinement_is_reported_and_can_be_turned_off(tmp_path):
     assert all(s.startswith("block ") and ": " in s for s in ref["skipped"])  # other near-flat blocks, with why
     assert ref["flat_edges_before"] >= 1 and ref["flat_edges"] == 0
     assert len(ref["flat_corner_positions"]) == ref["flat_corners"]
-    assert r["blocks"]["refined"]["pairs"] == r["blocks"]["pairs"] + 3  # the three new interfaces
+    assert r["blocks"]["refined"]["pairs"] == r["blocks"]["pairs"] == r["blocks"]["before_refinement"]["pairs"] + 3  # the three new interfaces
     assert not plain["hexmesh"]["refinement"]["applied"] and "refined" not in plain["blocks"]
+    assert plain["blocks"]["count"] == 7 and "turned off" in plain["blocks"]["flat_refinement"]["reason"]
     assert plain["hexmesh"]["min_scaled_jacobian"] == pytest.approx(ref["plain_min_scaled_jacobian"])
     assert r["hexmesh"]["min_scaled_jacobian"] == pytest.approx(ref["refined_min_scaled_jacobian"])
     assert r["hexmesh"]["min_scaled_jacobian"] > plain["hexmesh"]["min_scaled_jacobian"] + 0.2

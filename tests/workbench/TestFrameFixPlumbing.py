@@ -424,6 +424,8 @@ class BlocksPlumbing(unittest.TestCase):
         self.assertEqual(report.blocks_text(b), "7 blocks, all valid, 1 flat edge")
         b.update(valid=6, conforming_pairs=9)
         self.assertEqual(report.blocks_text(b), "7 blocks, 6 valid, 9/10 pairs conforming, 1 flat edge")
+        b = dict(count=9, valid=9, conforming_pairs=12, pairs=12, flat_corners=0, flat_edges=0, refined=1, cut=7)
+        self.assertEqual(report.blocks_text(b), "9 blocks (7 cut, 1 with a flat edge cut in three), all valid")
 
     def test_blocks_job_command_line_and_progress(self):
         j = job.AnalysisJob(Part.makeBox(1, 1, 1), 0.2, method="snap", blocks=True)

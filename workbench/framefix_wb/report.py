@@ -160,6 +160,10 @@ def _blocks(b):
         if not isinstance(b.get(key), int) or b[key] < 0:
             _fail("blocks.%s is not a count" % key)
         out[key] = b[key]
+    flat = b.get("flat_refinement") or {}  # absent in reports from before the blocks' own refinement
+    out["refined"] = flat["refined"] if flat.get("kept") and isinstance(flat.get("refined"), int) else 0
+    cut = (b.get("before_refinement") or {}).get("count")
+    out["cut"] = cut if out["refined"] and isinstance(cut, int) else out["count"]
     items = b.get("blocks") or []
     if not isinstance(items, list) or len(items) != out["count"]:
         _fail("blocks.blocks does not hold blocks.count = %d blocks" % out["count"])
@@ -221,8 +225,11 @@ def plural(n, word):
 
 def blocks_text(b):
     """'7 blocks, all valid, 1 flat edge' or '7 blocks, 6 valid, 9/10 pairs conforming,
-    1 flat edge': what a CAD engineer asks first about a block decomposition."""
+    1 flat edge': what a CAD engineer asks first about a block decomposition; '9 blocks (7 cut,
+    1 with a flat edge cut in three), all valid' where flat corners were refined."""
     parts = [plural(b["count"], "block")]
+    if b.get("refined"):
+        parts[0] += " (%d cut, %d with a flat edge cut in three)" % (b["cut"], b["refined"])
     parts.append("all valid" if b["valid"] == b["count"] else "%d valid" % b["valid"])
     if b["conforming_pairs"] != b["pairs"]:
         parts.append("%d/%d pairs conforming" % (b["conforming_pairs"], b["pairs"]))

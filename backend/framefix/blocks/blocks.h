@@ -221,4 +221,11 @@ BlockDecomposition build_blocks(const TetMesh& mesh, const TetTopology& topo, co
                                 const FrameField& field, const SingularityGraph& graph,
                                 const std::vector<SnappedPath>& paths, const BlockOptions& options = {});
 
+// `before` with its tets' blocks replaced by `tet_block` (ids 0..n-1: the parts the flat-edge
+// refinement cut, docs/algorithms.md#flat-corner-refinement-in-the-blocks) and validated again;
+// the sheets and what was done to make the blocks stay before's.
+BlockDecomposition relabelled_blocks(const TetMesh& mesh, const TetTopology& topo, const FeatureSet& features,
+                                     const std::vector<SnappedPath>& paths, const BlockDecomposition& before,
+                                     Eigen::VectorXi tet_block, const BlockOptions& options = {});
+
 }  // namespace framefix

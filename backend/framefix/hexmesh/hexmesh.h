@@ -92,6 +92,12 @@ struct HexMesh {
 HexMesh build_hexmesh(const TetMesh& mesh, const BlockDecomposition& blocks, const HexMeshOptions& options,
                       const CadProjector& cad = {});
 
+// Each tet's block after the flat-edge refinement of `hm` (made from the blocks `tet_block`
+// labels): a tet of a block the refinement cut goes to the part whose hex centre is nearest; the
+// parts' ids are hm's (a cut block's first part keeps its id). tet_block itself when nothing was cut.
+Eigen::VectorXi refined_tet_blocks(const TetMesh& mesh, const TetTopology& topo, const Eigen::VectorXi& tet_block,
+                                   const HexMesh& hm);
+
 // The 12 edges of a hex as pairs of its VTK corners, in C3D20's (and VTK_QUADRATIC_HEXAHEDRON's)
 // order of edge midpoints.
 constexpr int kHexEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},

@@ -9,6 +9,7 @@
 #include "framefix/mesh/crease_features.h"
 #include "framefix/mesh/mesh_io.h"
 #include "framefix/pipeline/correction_methods.h"
+#include "framefix/pipeline/flat_blocks.h"
 #include "framefix/pipeline/mesh_attempts.h"
 #include "framefix/pipeline/solve_stages.h"
 #include "framefix/pipeline/thin_blocks.h"
@@ -85,18 +86,10 @@ BlockDecomposition blocks(const RunResult& r, const RunOptions& o) {
 }
 
 // Boundary vertices go onto the solid the tets were made from: the filleted one after a fillet
-// correction, none for a tet-mesh input.
+// correction, none for a tet-mesh input. The flat refinement's hex mesh when it made one.
 HexMesh hexmesh(const RunResult& r, const RunOptions& o) {
     report(o.progress, "hexmesh", 0.0);
-    const BrepModel* model = r.correction && r.correction->filleted ? r.correction->filleted.get() : r.model.get();
-    CadProjector cad;
-    if (model) {
-        cad.to_face = [model](int face, const Eigen::Vector3d& p) { return closest_point_on_face(*model, face, p); };
-        cad.to_edge = [model](int edge, const Eigen::Vector3d& p) { return closest_point_on_edge(*model, edge, p); };
-    }
-    HexMesh h = build_hexmesh(r.mesh->tets, *r.blocks, o.hexmesh, cad);
-    if (model) h.part_volume = model->volume;
-    else for (int t = 0; t < r.mesh->tets.num_tets(); ++t) h.part_volume += tet_volume(r.mesh->tets, t);
+    HexMesh h = r.flat && r.flat->hexes ? *r.flat->hexes : mesh_hexes(r, o);
     report(o.progress, "hexmesh", 1.0);
     return h;
 }
@@ -184,6 +177,11 @@ RunResult run(const RunInput& input, const RunOptions& o) {
     } else {
         r.thin = ThinRefinement{};
         r.thin->reason = "turned off (--no-remesh-thin)";
+    }
+    {
+        double seconds = 0;
+        timed(seconds, t, [&] { r.flat = refine_flat_blocks(o, r); });
+        t.blocks += seconds;
     }
     if (done(Stage::blocks)) return r;
     timed(t.hexmesh, t, [&] { r.hexmesh = hexmesh(r, o); });

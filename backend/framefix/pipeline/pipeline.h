@@ -33,6 +33,7 @@ struct RunResult {
     std::optional<Correction> correction;     // absent when the run had none
     std::optional<BlockDecomposition> blocks;
     std::optional<ThinRefinement> thin;       // blocks runs on a B-rep whose blocks were not all valid
+    std::optional<BlockRefinement> flat;      // flat corners refined: the blocks before, and whether refined ones replaced them
     std::optional<HexMesh> hexmesh;          // done = false with the reason when the blocks cannot be meshed
     Timings timings;
     double peak_memory_mb = 0;

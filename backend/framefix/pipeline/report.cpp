@@ -212,9 +212,8 @@ json blocks_json(const BlockDecomposition& b) {
                          {"validation", b.seconds_validation}, {"total", b.seconds}}}};
 }
 
-// A run whose hex mesh refined blocks adds the refined complex's figures to the blocks section.
-// count, valid, ... and the `blocks` list stay those of the blocks as the sheets cut them: they
-// are what blocks.vtk labels and what the workbench lists (the refined blocks exist as hexes only).
+// A run whose hex mesh refined blocks adds the refined complex's figures to the blocks section:
+// the same blocks as the section's own when the blocks stage kept the refinement (flat_json).
 void refined_blocks_json(const HexRefinement& r, json& b) {
     b["refined"] = {{"count", r.blocks}, {"valid", r.blocks}, {"pairs", r.pairs}, {"conforming_pairs", r.pairs},
                     {"flat_edges", r.flat_edges}, {"flat_corners", r.flat_corners},
@@ -229,6 +228,15 @@ json thin_json(const ThinRefinement& t) {
                         {"conforming_pairs", t.conforming_before}, {"glued_sources", t.glued_before}}},
             {"finer", {{"count", t.count_after}, {"valid", t.valid_after}, {"pairs", t.pairs_after},
                        {"conforming_pairs", t.conforming_after}}}};
+}
+
+// The blocks as the sheets cut them (`before_refinement`), and what the flat refinement did.
+void flat_json(const BlockRefinement& f, json& b) {
+    b["before_refinement"] = {{"count", f.count_before}, {"valid", f.valid_before}, {"pairs", f.pairs_before},
+                              {"conforming_pairs", f.conforming_before}, {"flat_corners", f.flat_corners_before},
+                              {"flat_edges", f.flat_edges_before}};
+    b["flat_refinement"] = {{"tried", f.tried}, {"kept", f.kept}, {"reason", f.reason}, {"refined", f.refined},
+                            {"seconds", f.seconds}};
 }
 
 json refinement_json(const HexRefinement& r) {
@@ -313,6 +321,7 @@ std::string report_json(const RunResult& r) {
     if (r.correction) j["correction"] = correction_json(*r.correction, r.singularities->summary);
     if (r.blocks) j["blocks"] = blocks_json(*r.blocks);
     if (r.blocks && r.thin) j["blocks"]["thin_refinement"] = thin_json(*r.thin);
+    if (r.blocks && r.flat) flat_json(*r.flat, j["blocks"]);
     if (r.hexmesh) j["hexmesh"] = hexmesh_json(*r.hexmesh);
     if (r.blocks && r.hexmesh && r.hexmesh->refinement.kept) refined_blocks_json(r.hexmesh->refinement, j["blocks"]);
     j["timings_s"] = timings_json(r);

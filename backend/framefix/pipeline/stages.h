@@ -10,6 +10,7 @@
 #include "framefix/corrections/extrusion.h"
 #include "framefix/corrections/snapping.h"
 #include "framefix/frame_field/frame_field.h"
+#include "framefix/hexmesh/hexmesh.h"
 #include "framefix/mesh/features.h"
 #include "framefix/mesh/tet_mesh.h"
 #include "framefix/mesh/tet_topology.h"
@@ -117,6 +118,21 @@ struct ThinRefinement {
     int glued_before = 0;        // glued curves whose sheets the first blocks used (BlockDecomposition::glued_sources)
     int count_after = 0, valid_after = 0, pairs_after = 0, conforming_after = 0;
     double seconds = 0;          // the finer run, from meshing to its blocks
+};
+
+// Flat corners refined in the blocks (flat_blocks.h, docs/algorithms.md#flat-corner-refinement-in-the-blocks):
+// the figures of the blocks as the sheets cut them, and whether the refined blocks replaced them.
+struct BlockRefinement {
+    bool tried = false;          // a hex mesh judged the refinement; false: the reason says why not
+    bool kept = false;           // the run's blocks are the refined ones
+    std::string reason;          // why not kept (empty when kept)
+    int refined = 0;             // blocks the template split in three (when kept)
+    int count_before = 0, valid_before = 0, pairs_before = 0, conforming_before = 0;
+    int flat_corners_before = 0, flat_edges_before = 0;
+    double seconds = 0;
+    // The hex mesh made to judge it (of the refined blocks when refined), which the hexmesh stage
+    // reuses: it would make the same one.
+    std::shared_ptr<const HexMesh> hexes;
 };
 
 struct Timings {  // seconds

@@ -50,6 +50,9 @@ std::string human_summary(const RunResult& r) {
              (blocks->valid == blocks->count ? std::string("all valid") : std::to_string(blocks->valid) + " valid") +
              ", " + std::to_string(blocks->conforming_pairs) + "/" + std::to_string(blocks->pairs) + " pairs conforming";
         if (blocks->flat_edges) s += ", " + std::to_string(blocks->flat_edges) + " flat edge" + (blocks->flat_edges == 1 ? "" : "s");
+        if (r.flat && r.flat->kept)
+            s += " (" + std::to_string(r.flat->refined) + " block" + (r.flat->refined == 1 ? "" : "s") +
+                 " with a flat edge split in three, from " + std::to_string(r.flat->count_before) + ")";
         if (r.thin && r.thin->kept)
             s += " (meshed again finer next to " + std::to_string(r.thin->faces) + " face" + (r.thin->faces == 1 ? "" : "s") +
                  ": blocks thinner than 3 h)";
@@ -60,7 +63,7 @@ std::string human_summary(const RunResult& r) {
                       hex->hexes.size() == 1 ? "" : "es", hex->quality.min_scaled_jacobian, hex->quality.inverted);
         s += hex->done ? std::string(q) : "; no hex mesh: " + hex->reason;
         const HexRefinement& ref = hex->refinement;
-        if (hex->done && ref.kept)
+        if (hex->done && ref.kept && !(r.flat && r.flat->kept))
             s += " (" + std::to_string(ref.refined) + " block" + (ref.refined == 1 ? "" : "s") + " with a flat edge split in three)";
     }
     if (r.mesh && r.mesh->attempts.size() > 1)

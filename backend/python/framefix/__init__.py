@@ -64,14 +64,18 @@ def correct(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s
 
 
 def build_blocks(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False,
-                 remesh_thin=True):
+                 remesh_thin=True, refine=True):
     """Analyse a part, correct it (`method`, or "none"), cut it into blocks.
 
     ``.blocks`` has ``.tet_block`` (block id per tet), ``.count``, ``.valid``;
     ``report(result)["blocks"]`` the validation. With `remesh_thin`, invalid blocks thinner than 3
     tet edges get a finer mesh next to them (``report(result)["blocks"]["thin_refinement"]``).
+    With `refine`, where every block is valid and conforming, a block with a flat edge is cut in
+    three where that gives better hexes: the blocks are then the refined ones, and
+    ``report(result)["blocks"]["before_refinement"]`` has the figures of the blocks as cut.
     """
-    return run(part, "blocks", method, size, size_factor, threads, budget_s, fillet_rims, remesh_thin=remesh_thin)
+    return run(part, "blocks", method, size, size_factor, threads, budget_s, fillet_rims, refine=refine,
+               remesh_thin=remesh_thin)
 
 
 def hex_mesh(part, method="auto", size=None, size_factor=1.0, threads=0, budget_s=0.0, fillet_rims=False,

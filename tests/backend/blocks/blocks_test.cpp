@@ -39,6 +39,7 @@ const SampleRun& run(const std::string& name, double size, double factor = 1) {
         slot = std::make_unique<SampleRun>();
         RunOptions options;
         options.stop_after = Stage::blocks;
+        options.hexmesh.refine_flat = false;  // the blocks as the sheets cut them (the graph's)
         options.mesh.size = size;
         options.size_factor = factor;
         slot->result = framefix::run(RunInput::file(sample(name)), options);
