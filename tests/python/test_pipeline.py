@@ -103,6 +103,18 @@ def test_blocks_of_the_half_sphere_box_report_its_convex_paths():
     assert (r.blocks.junction_tries, r.blocks.junction_mode) == ([], "")  # snapped: no interior node
 
 
+def test_the_notchs_flat_block_is_refined_in_the_blocks_unless_turned_off():
+    """The snapped notch: 7 blocks as cut, the one under the arc with a flat edge; cut in three
+    with its neighbour along the edge, 9 blocks, each tet in one of them."""
+    r = framefix.build_blocks(NOTCH, method="snap")
+    b = framefix.report(r)["blocks"]
+    assert b["flat_refinement"]["kept"] and b["before_refinement"]["count"] == 7
+    assert (r.blocks.count, r.blocks.valid) == (9, 9) and set(np.unique(r.blocks.tet_block)) == set(range(9))
+    plain = framefix.build_blocks(NOTCH, method="snap", refine=False)
+    assert (plain.blocks.count, plain.blocks.valid) == (7, 7)
+    assert "turned off" in framefix.report(plain)["blocks"]["flat_refinement"]["reason"]
+
+
 def test_blocks_at_a_junction_node_list_each_mode_tried_and_keep_the_best():
     """notch_filleted's interior node (1 valence-3 and 3 valence-5 curves, the fillet's curve
     running straight on through it): the five ways of carrying sheets past it are tried, and the

@@ -51,10 +51,10 @@ def scenario(h):
     if blocks is None:
         return
     report = report_of(curves)
-    count = report["blocks"]["count"]
-    h.check(blocks.Count == 7 and blocks.Count == count,
-            "the notch cuts into 7 blocks after snapping: %d (the report: %d)"
-            % (blocks.Count, count))
+    count, cut = report["blocks"]["count"], report["blocks"]["cut"]
+    h.check(cut == 7 and blocks.Count == count == 9,
+            "the notch cuts into 7 blocks after snapping, 9 once its flat block is refined: %d shown "
+            "(the report: %d, %d as cut)" % (blocks.Count, count, cut))
     tets = blocks.FemMesh.VolumeCount
     h.check(tets > 0 and len(blocks.BlockIds) == tets == int(report["mesh"]["tets"]),
             "one block id per tet: %d ids, %d volumes, %s tets in the report"

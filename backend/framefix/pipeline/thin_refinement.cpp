@@ -100,6 +100,7 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     const auto t0 = std::chrono::steady_clock::now();
     RunOptions fine = o;
     fine.remesh_thin = false;
+    fine.hexmesh.refine_flat = false;  // compared as cut, as the first run's; the kept blocks are refined after
     fine.stop_after = Stage::blocks;
     fine.mesh.size = r.mesh->tets.size;
     fine.mesh.face_size = thin.face_size;
