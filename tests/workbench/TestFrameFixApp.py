@@ -280,7 +280,8 @@ class Blocks(unittest.TestCase):
             blocks = analysis.make_blocks(part)
             report = report_of(blocks.Analysis)
             self.assertTrue(blocks.isValid())
-            self.assertEqual(blocks.Count, 7)  # docs/results.md: the notch cut after snapping
+            self.assertEqual(report["blocks"]["cut"], 7)  # docs/results.md: the notch cut after snapping
+            self.assertEqual(blocks.Count, 9)  # its flat block and the one along the edge, each in three
             self.assertEqual(blocks.Count, report["blocks"]["count"])
             tets = blocks.FemMesh.VolumeCount
             self.assertEqual(tets, int(report["mesh"]["tets"]))
