@@ -130,8 +130,8 @@ struct BlockRefinement {
     int count_before = 0, valid_before = 0, pairs_before = 0, conforming_before = 0;
     int flat_corners_before = 0, flat_edges_before = 0;
     double seconds = 0;
-    // The hex mesh made to judge it (of the refined blocks when refined), which the hexmesh stage
-    // reuses: it would make the same one.
+    // The hex mesh made to judge it (its blocks are the refined ones when a template was kept),
+    // which the hexmesh stage reuses: it would make the same one.
     std::shared_ptr<const HexMesh> hexes;
 };
 
