@@ -22,6 +22,20 @@ def assert_refined_from_cut(b):
         assert cut_figures(b) == (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) and f["reason"]
 
 
+def assert_face_lists(b):
+    """Each valid block lists 6 faces of 4 corners, each across the part's boundary or a neighbour (a
+    neighbour touching only along an edge has none), and a conforming pair one face on each side."""
+    faces = {k["id"]: k["face_list"] for k in b["blocks"]}
+    for k in b["blocks"]:
+        if k["valid"]:
+            assert [f["corners"] for f in k["face_list"]] == [4] * 6
+        assert {f["across"] for f in k["face_list"] if f["across"] >= 0} <= set(k["neighbours"])
+    for p in b["neighbour_pairs"]:
+        a, c = p["blocks"]
+        if p["conforming"]:
+            assert [f["across"] for f in faces[a]].count(c) == 1 and [f["across"] for f in faces[c]].count(a) == 1
+
+
 def block_ids(vtk_path):
     """Block id of every tet, from blocks.vtk's CELL_DATA "block"."""
     lines = vtk_path.read_text().splitlines()
@@ -39,6 +53,7 @@ def test_sanity_parts_give_the_expected_valid_blocks(analyze, tmp_path, name, co
     assert (b["conforming_pairs"], b["pairs"]) == (pairs, pairs)
     assert len(b["blocks"]) == count
     assert all(k["faces"] == 6 and k["edges"] == 12 and k["corners"] == 8 for k in b["blocks"])
+    assert_face_lists(b)
     # every tet belongs to exactly one block, and every block has tets
     ids = block_ids(tmp_path / "out" / "blocks.vtk")
     assert len(ids) == r["mesh"]["tets"]
@@ -81,6 +96,7 @@ def test_notch_after_snapping_gives_seven_valid_conforming_blocks(tmp_path):
     assert (b["count"], b["valid"], b["conforming_pairs"], b["pairs"]) == (9, 9, 12, 12)
     assert b["before_refinement"]["flat_corners"] > 0 and b["flat_corners"] == 0
     assert len(b["blocks"]) == 9 and sorted(k["id"] for k in b["blocks"]) == list(range(9))
+    assert_face_lists(b)
     ids = block_ids(tmp_path / "blocks.vtk")
     assert sorted(set(ids)) == list(range(9)) and len(ids) == r["mesh"]["tets"]
     assert {"correct", "blocks"} <= set(r["timings_s"])

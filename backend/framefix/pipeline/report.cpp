@@ -173,7 +173,11 @@ json blocks_json(const BlockDecomposition& b) {
     json blocks = json::array(), pairs = json::array();
     for (size_t i = 0; i < b.blocks.size(); ++i) {
         const auto& k = b.blocks[i];
-        blocks.push_back({{"id", i},             {"tets", k.tets.size()},   {"volume", k.volume},
+        json faces = json::array();  // each cleaned face: the block across (-1: the part's boundary), its corners
+        if (i < b.faces.size())
+            for (size_t f = 0; f < b.faces[i].label.size(); ++f)
+                faces.push_back({{"across", std::max(-1, b.faces[i].label[f])}, {"corners", b.faces[i].corners[f].size()}});
+        blocks.push_back({{"face_list", faces},{"id", i},             {"tets", k.tets.size()},   {"volume", k.volume},
                           {"valid", k.valid},    {"faces", k.faces},        {"edges", k.edges},
                           {"corners", k.corners}, {"flat_edges", k.flat_edges}, {"flat_corners", k.flat_corners},
                           {"neighbours", k.neighbours}, {"centroid", point(k.centroid)}, {"reason", k.reason}});
