@@ -196,6 +196,23 @@ def test_rounded_box_thin_cushions_get_a_finer_mesh(tmp_path, factor):
         assert abs(h["volume"] - h["part_volume"]) < 0.01 * h["part_volume"]
 
 
+def test_a_finer_runs_own_thin_blocks_are_meshed_finer_again(tmp_path):
+    """The groove at 0.7 x: the first finer mesh, kept, still leaves a block that is no hexahedron;
+    one more round from it (its own thin places and thin blocks, its face sizes kept) makes every
+    block valid and every pair conforming, within the cap of 6 x the first mesh's tets
+    (docs/algorithms.md#thin-blocks)."""
+    code, out, err = run("blocks", SAMPLES / "groove.step", "--method", "snap", "--size-factor", "0.7", "--out",
+                         tmp_path, "--quiet", timeout=900)
+    assert code == 0, err
+    r = json.loads((tmp_path / "report.json").read_text())
+    t = r["blocks"]["thin_refinement"]
+    assert t["kept"] and t["rounds"] == 2, t["reason"]
+    assert r["mesh"]["tets"] == t["tets_after"] and t["tets_before"] < t["tets_after"] <= 6 * t["tets_before"]
+    b = r["blocks"]
+    assert (b["valid"], b["conforming_pairs"]) == (b["count"], b["pairs"])
+    assert "then again: blocks thinner than 3 h" in out
+
+
 def test_glued_sheets_do_not_keep_the_gusset_from_its_finer_mesh(tmp_path):
     """The gusset at 1.5 x: the sheets of the curves glued to its web's edges make thinner blocks,
     whose finer mesh would pass the cap of 6 x. The thin places are read from the blocks without

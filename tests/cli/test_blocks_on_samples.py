@@ -10,14 +10,13 @@ from conftest import SAMPLES, run
 
 FACTORS = ["1", "0.7"]
 
-_TETS = "two 4-faced blocks (tetrahedra) beside the groove, above the level of its floor"
+_TETS = "two 4-faced slabs beside the groove above its floor, between sheets 1.7 h apart"
 _FILLETED = "a 10-faced block around the filleted floor and a block with a face of 3 corners"
 _BOSS = "7- to 10-faced blocks around the boss, where the snapped paths and curtain sheets leave prisms"
 _PRISM_CAP = "pentagonal prisms whose cut, carried on as a sheet, reaches a block that is no hexahedron"
 _NOT_MESHABLE = "snapping leaves the corrected graph not hex-meshable at this size"
 KNOWN = {
     ("groove.step", "1"): _TETS,
-    ("groove.step", "0.7"): "a 7-faced block (a pentagonal prism) next to the island",
     ("groove_filleted.step", "1"): _FILLETED,
     ("groove_filleted.step", "0.7"): "two 7-faced blocks (pentagonal prisms) around the filleted floor",
     ("groove_narrow.step", "1"): "an 8-faced block under the 0.1-wide groove",

@@ -226,7 +226,7 @@ void refined_blocks_json(const HexRefinement& r, json& b) {
 
 json thin_json(const ThinRefinement& t) {
     return {{"tried", t.tried}, {"kept", t.kept}, {"reason", t.reason}, {"spots", t.spots}, {"faces", t.faces},
-            {"min_size", t.min_size}, {"thinnest", t.thinnest}, {"without_glued", t.without_glued}, {"tets_before", t.tets_before},
+            {"min_size", t.min_size}, {"thinnest", t.thinnest}, {"without_glued", t.without_glued}, {"rounds", t.rounds}, {"tets_before", t.tets_before},
             {"tets_after", t.tets_after}, {"seconds", t.seconds},
             {"before", {{"count", t.count_before}, {"valid", t.valid_before}, {"pairs", t.pairs_before},
                         {"conforming_pairs", t.conforming_before}, {"glued_sources", t.glued_before}}},

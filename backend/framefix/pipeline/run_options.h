@@ -28,6 +28,9 @@ struct RunOptions {
     BlockOptions blocks;
     // Mesh again finer next to blocks thinner than 3 h when the blocks are not all valid (thin_blocks.h).
     bool remesh_thin = true;
+    // Finer runs in a row at most: a kept finer run whose blocks are still not all valid meshes
+    // again finer, with its own face sizes and those of its thin blocks (docs/algorithms.md#thin-blocks).
+    int thin_rounds = 2;
     HexMeshOptions hexmesh;
     double size_factor = 1;  // multiplies the default size when mesh.size == 0
     int threads = 0;         // OpenMP threads of this run's parallel loops, 0 = all cores

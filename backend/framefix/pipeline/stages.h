@@ -2,6 +2,7 @@
 // The stages of a run, in the order they run, and what each one produces.
 #include <string>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -118,6 +119,8 @@ struct ThinRefinement {
     int glued_before = 0;        // glued curves whose sheets the first blocks used (BlockDecomposition::glued_sources)
     int count_after = 0, valid_after = 0, pairs_after = 0, conforming_after = 0;
     double seconds = 0;          // the finer run, from meshing to its blocks
+    int rounds = 0;              // finer runs kept in a row (RunOptions::thin_rounds)
+    std::map<int, double> face_size;  // B-rep face -> edge length the kept mesh was made with
 };
 
 // Flat corners refined in the blocks (flat_blocks.h, docs/algorithms.md#flat-corner-refinement-in-the-blocks):

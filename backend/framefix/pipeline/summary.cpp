@@ -25,6 +25,8 @@ std::string human_summary(const RunResult& r) {
             if (m.curves_3_5) parts.push_back(std::to_string(m.curves_3_5) + " 3-5");
             if (m.valence3) parts.push_back(std::to_string(m.valence3) + " valence-3");
             if (m.valence5) parts.push_back(std::to_string(m.valence5) + " valence-5");
+            const int other = m.curves - m.curves_3_5 - m.valence3 - m.valence5;  // kind Other: no valence read
+            if (other > 0) parts.push_back(std::to_string(other) + " other");
             for (size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];
         }
         if (m.invalid_nodes) s += ", " + std::to_string(m.invalid_nodes) + " invalid node" + (m.invalid_nodes == 1 ? "" : "s");
@@ -55,7 +57,7 @@ std::string human_summary(const RunResult& r) {
                  " with a flat edge split in three, from " + std::to_string(r.flat->count_before) + ")";
         if (r.thin && r.thin->kept)
             s += " (meshed again finer next to " + std::to_string(r.thin->faces) + " face" + (r.thin->faces == 1 ? "" : "s") +
-                 ": blocks thinner than 3 h)";
+                 (r.thin->rounds > 1 ? ", then again" : "") + ": blocks thinner than 3 h)";
     }
     if (const auto& hex = r.hexmesh) {
         char q[96];

@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "framefix/corrections/boundary_distance.h"
+#include "framefix/mesh/keys.h"
 #include "framefix/mesh/size_model.h"
+#include "framefix/streamlines/point_grid.h"
 
 namespace framefix {
 namespace {
@@ -85,6 +87,57 @@ ThinFaces thin_block_faces(const TetMesh& mesh, const SingularityGraph& graph, c
         maker.add(centroid, &normal);
     }
     return maker.out;
+}
+
+namespace {
+
+// Twice the largest distance from a tet centroid of the block to its boundary's nearest vertex,
+// model units; 0 when some tet lies deeper than kResolvedThicknessH / 2 h (the block is resolved).
+double block_thickness(const TetMesh& mesh, const BlockInfo& info, const std::vector<BoundaryTriangle>& boundary, double h) {
+    std::vector<int> verts;
+    for (const BoundaryTriangle& t : boundary) verts.insert(verts.end(), t.verts.data(), t.verts.data() + 3);
+    std::sort(verts.begin(), verts.end());
+    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+    Points P(verts.size(), 3);
+    for (size_t i = 0; i < verts.size(); ++i) P.row(Eigen::Index(i)) = mesh.points.row(verts[i]);
+    const double reach = 0.5 * kResolvedThicknessH * h;
+    const PointGrid grid(P, reach);
+    double deepest = 0;
+    for (int t : info.tets) {
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 4; ++k) c += mesh.points.row(mesh.tets(t, k)).transpose() / 4;
+        const int near = grid.nearest(c, reach);
+        if (near < 0) return 0;
+        deepest = std::max(deepest, (P.row(near).transpose() - c).norm());
+    }
+    return 2 * deepest;
+}
+
+}  // namespace
+
+void add_thin_blocks(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& blocks, double h,
+                     ThinFaces& thin) {
+    std::map<TriangleKey, int> tag;  // boundary triangle -> B-rep face
+    for (Eigen::Index b = 0; b < mesh.boundary_faces.rows(); ++b)
+        tag[triangle_key(mesh.boundary_faces(b, 0), mesh.boundary_faces(b, 1), mesh.boundary_faces(b, 2))] = mesh.face_tags[b];
+    for (int k = 0; k < blocks.count; ++k) {
+        const BlockInfo& info = blocks.blocks[size_t(k)];
+        if (info.valid || info.faces >= 6 || size_t(k) >= blocks.boundary.size()) continue;
+        const double t = block_thickness(mesh, info, blocks.boundary[size_t(k)], h);
+        if (!(t > 0)) continue;
+        const double size = std::max(t / kEdgesAcross, kMinSizeH * h);
+        for (int tet : info.tets)
+            for (int f = 0; f < 4; ++f) {
+                const int face = topo.tet_faces(tet, f);
+                if (topo.face_tets(face, 0) >= 0 && topo.face_tets(face, 1) >= 0) continue;
+                const auto it = tag.find(triangle_key(topo.faces(face, 0), topo.faces(face, 1), topo.faces(face, 2)));
+                if (it == tag.end()) continue;
+                auto [at, fresh] = thin.face_size.emplace(it->second, size);
+                if (!fresh) at->second = std::min(at->second, size);
+            }
+        thin.places += 1;
+        thin.thinnest = thin.thinnest > 0 ? std::min(thin.thinnest, 0.5 * t) : 0.5 * t;
+    }
 }
 
 double estimate_thin_tets(const TetMesh& mesh, const ThinFaces& thin) {

@@ -8,6 +8,7 @@
 
 #include "framefix/blocks/blocks.h"
 #include "framefix/mesh/tet_mesh.h"
+#include "framefix/mesh/tet_topology.h"
 #include "framefix/pipeline/pipeline.h"
 #include "framefix/singularities/singularity_graph.h"
 
@@ -33,6 +34,13 @@ struct ThinFaces {
 ThinFaces thin_block_faces(const TetMesh& mesh, const SingularityGraph& graph, const SheetSoup& sheets, double h,
                            const std::function<bool(const Eigen::Vector3d&)>& counts = {});
 
+// Under-faced invalid blocks (fewer than 6 faces) no thicker than kResolvedThicknessH h, such as
+// a slab between two parallel sheets 1-2 h apart whose narrow end faces the staircase frays away:
+// every B-rep face the block touches asks for edges of a third of its thickness (no shorter than
+// h / 3). Adds to `thin`.
+void add_thin_blocks(const TetMesh& mesh, const TetTopology& topo, const BlockDecomposition& blocks, double h,
+                     ThinFaces& thin);
+
 // Tets of the part meshed again with `thin`'s face sizes: the mesh's own plus a band about 1.4 of
 // the finer edges deep over each finer face (TetGen's grading spreads the rest).
 double estimate_thin_tets(const TetMesh& mesh, const ThinFaces& thin);
@@ -47,7 +55,9 @@ bool finer_run_better(const RunResult& finer, const RunResult& first);
 // conforming, its graph is hex-meshable and thin_block_faces finds thin places next to invalid
 // blocks within the tet budget (at most 6 x the tets), the whole run again from the mesh stage
 // with those face sizes. The finer run's mesh, field, graph, correction and blocks replace r's when
-// its blocks are better. Never throws for the finer run's failures: the reason says what failed.
+// its blocks are better; when they are still not all valid and conforming, once more from them
+// (options.thin_rounds), with their thin blocks (add_thin_blocks) too. Never throws for the finer
+// run's failures: the reason says what failed.
 ThinRefinement refine_thin_blocks(const RunOptions& options, RunResult& r);
 
 }  // namespace framefix

@@ -35,6 +35,9 @@ std::string thin_blocks_skip(const RunResult& r) {
 // a cost bound. A thin cushion under a whole face needs the face's band at d / 3 (rounded_box and
 // HexMe's s13o: 5.2 and 5.7 x); a few faces less (a stepped shaft: 4.1 x).
 constexpr double kMaxThinTetFactor = 6;
+// One more round may at most double the finer mesh's tets: a cost bound, since it runs the whole
+// pipeline once more (the groove's second round: 1.2 x at 0.7 x, 1.7 x at 1 x).
+constexpr double kAgainTetFactor = 2;
 
 // Whether a point lies in an invalid block or a block with a non-conforming pair (as they were
 // before under-faced blocks were joined away or prisms cut): only there do thin blocks need a finer mesh.
@@ -59,11 +62,43 @@ BlockDecomposition blocks_without_glued(const RunOptions& o, const RunResult& r)
                         r.correction ? r.correction->snap.paths : no_paths, bo);
 }
 
-}  // namespace
+// A first run's thin places: curves and sheets near the walls, next to blocks in trouble.
+ThinFaces first_run_places(const RunOptions& o, const RunResult& r, long base_tets, ThinRefinement& t) {
+    const BlockDecomposition& b = *r.blocks;
+    const TetLocator locator(r.mesh->tets, r.mesh->topology);
+    ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(b, locator));
+    if (b.glued_sources > 0 && estimate_thin_tets(r.mesh->tets, thin) > kMaxThinTetFactor * double(base_tets)) {
+        // The glued curves' sheets made thinner blocks than the mesh may be refined for; those
+        // without them may fit, and their finer mesh beat these blocks (the gusset at 1.5 x).
+        const BlockDecomposition plain = blocks_without_glued(o, r);
+        ThinFaces other = thin_block_faces(r.mesh->tets, *r.singularities, plain.sheets, plain.h, in_trouble(plain, locator));
+        if (!other.face_size.empty() && estimate_thin_tets(r.mesh->tets, other) <= kMaxThinTetFactor * double(base_tets))
+            thin = std::move(other), t.without_glued = true;
+    }
+    return thin;
+}
 
-bool finer_run_better(const RunResult& finer, const RunResult& first) { return block_score(finer) > block_score(first); }
+// A kept finer run's, for one more round: its own thin places, and the under-faced blocks it still
+// carves too thin (a slab between two sheets); the face sizes it was made with stay.
+ThinFaces again_places(const RunResult& r, const std::map<int, double>& made_with) {
+    const BlockDecomposition& b = *r.blocks;
+    const TetLocator locator(r.mesh->tets, r.mesh->topology);
+    ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(b, locator));
+    add_thin_blocks(r.mesh->tets, r.mesh->topology, b, b.h, thin);
+    if (!thin.face_size.empty())
+        for (const auto& [face, size] : made_with) {
+            auto [at, fresh] = thin.face_size.emplace(face, size);
+            if (!fresh) at->second = std::min(at->second, size);
+        }
+    return thin;
+}
 
-ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
+// One finer run: r's thin places (a first round's when `made_with` is empty, else again_places),
+// meshed finer within kMaxThinTetFactor x base_tets (and, once more, kAgainTetFactor x r's tets),
+// kept in r when better.
+ThinRefinement thin_round(const RunOptions& o, RunResult& r, long base_tets, const std::map<int, double>& made_with) {
+    const double cap = made_with.empty() ? kMaxThinTetFactor * double(base_tets)
+                                         : std::min(kMaxThinTetFactor * double(base_tets), kAgainTetFactor * r.mesh->tets.num_tets());
     ThinRefinement t;
     const BlockDecomposition& b = *r.blocks;
     t.tets_before = r.mesh->tets.num_tets();
@@ -71,16 +106,7 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     t.glued_before = b.glued_sources;
     t.reason = thin_blocks_skip(r);
     if (!t.reason.empty()) return t;
-    const TetLocator locator(r.mesh->tets, r.mesh->topology);
-    ThinFaces thin = thin_block_faces(r.mesh->tets, *r.singularities, b.sheets, b.h, in_trouble(b, locator));
-    if (b.glued_sources > 0 && estimate_thin_tets(r.mesh->tets, thin) > kMaxThinTetFactor * double(t.tets_before)) {
-        // The glued curves' sheets made thinner blocks than the mesh may be refined for; those
-        // without them may fit, and their finer mesh beat these blocks (the gusset at 1.5 x).
-        const BlockDecomposition plain = blocks_without_glued(o, r);
-        ThinFaces other = thin_block_faces(r.mesh->tets, *r.singularities, plain.sheets, plain.h, in_trouble(plain, locator));
-        if (!other.face_size.empty() && estimate_thin_tets(r.mesh->tets, other) <= kMaxThinTetFactor * double(t.tets_before))
-            thin = std::move(other), t.without_glued = true;
-    }
+    ThinFaces thin = made_with.empty() ? first_run_places(o, r, base_tets, t) : again_places(r, made_with);
     t.spots = thin.places;
     t.faces = int(thin.face_size.size());
     t.thinnest = thin.thinnest;
@@ -92,9 +118,11 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
     t.min_size = std::min_element(thin.face_size.begin(), thin.face_size.end(),
                                   [](const auto& a, const auto& c) { return a.second < c.second; })->second;
     const double estimate = estimate_thin_tets(r.mesh->tets, thin);
-    if (estimate > kMaxThinTetFactor * double(t.tets_before)) {
+    if (estimate > cap) {
         t.reason = "the thin blocks need about " + std::to_string(long(estimate / 1000)) + "k tets, more than " +
-                   std::to_string(int(kMaxThinTetFactor)) + " x this mesh's; a smaller --size-factor meshes them finer";
+                   (made_with.empty() ? std::to_string(int(kMaxThinTetFactor)) + " x this mesh's"
+                                      : "this round may add (" + std::to_string(long(cap / 1000)) + "k)") +
+                   "; a smaller --size-factor meshes them finer";
         return t;
     }
     const auto t0 = std::chrono::steady_clock::now();
@@ -122,8 +150,29 @@ ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
                             std::to_string(t.faces) + " faces"
                       : "the finer mesh's blocks are not better";
     if (t.kept) {
+        t.rounds = 1, t.face_size = std::move(thin.face_size);
         r.mesh = std::move(f.mesh), r.field = std::move(f.field), r.singularities = std::move(f.singularities);
         r.correction = std::move(f.correction), r.blocks = std::move(f.blocks);
+    }
+    return t;
+}
+
+}  // namespace
+
+bool finer_run_better(const RunResult& finer, const RunResult& first) { return block_score(finer) > block_score(first); }
+
+ThinRefinement refine_thin_blocks(const RunOptions& o, RunResult& r) {
+    const long first_tets = r.mesh->tets.num_tets();
+    ThinRefinement t = thin_round(o, r, first_tets, {});
+    // A kept round whose blocks are still not all good goes once more, from the finer run.
+    for (int round = 1; t.kept && round < o.thin_rounds && !all_good(*r.blocks); ++round) {
+        ThinRefinement again = thin_round(o, r, first_tets, t.face_size);
+        t.seconds += again.seconds;
+        if (!again.kept) break;
+        t.rounds += 1, t.faces = again.faces, t.min_size = again.min_size, t.tets_after = again.tets_after;
+        t.face_size = std::move(again.face_size);
+        t.count_after = again.count_after, t.valid_after = again.valid_after;
+        t.pairs_after = again.pairs_after, t.conforming_after = again.conforming_after;
     }
     return t;
 }

@@ -126,6 +126,54 @@ TEST(ThinBlocks, OnlySheetsParallelToTheWallMakeACushion) {
     EXPECT_TRUE(thin_block_faces(m, none, square(false), kH).face_size.empty());
 }
 
+// The cube's tets cut at x = cut: block 0 below (invalid, 4 faces: an under-faced slab), block 1
+// above; block 0's boundary triangles as the blocks stage lists them.
+BlockDecomposition slab_and_rest(const MeshStage& m, double cut) {
+    BlockDecomposition b;
+    b.count = 2;
+    b.blocks.resize(2);
+    b.boundary.resize(2);
+    b.tet_block = Eigen::VectorXi::Ones(m.tets.num_tets());
+    for (int t = 0; t < m.tets.num_tets(); ++t) {
+        double x = 0;
+        for (int k = 0; k < 4; ++k) x += m.tets.points(m.tets.tets(t, k), 0) / 4;
+        if (x < cut) b.tet_block[t] = 0, b.blocks[0].tets.push_back(t);
+        else b.blocks[1].tets.push_back(t);
+    }
+    b.blocks[0].faces = 4;
+    b.blocks[1].faces = 6, b.blocks[1].valid = true;
+    for (int t : b.blocks[0].tets)
+        for (int k = 0; k < 4; ++k) {
+            const int f = m.topology.tet_faces(t, k), a = tet_across(m.topology, f, t);
+            if (a >= 0 && b.tet_block[a] == 0) continue;
+            BoundaryTriangle tri;
+            tri.verts = m.topology.faces.row(f).transpose();
+            tri.label = a >= 0 ? 1 : -1;
+            b.boundary[0].push_back(tri);
+        }
+    return b;
+}
+
+// A slab of tets against x = 0 about 1.5 h thick: every wall it touches (x = 0 and the four
+// sides, not x = 1) gets edges of a third of its thickness. A slab 5 h thick is resolved.
+TEST(ThinBlocks, AThinUnderFacedBlockRefinesTheWallsItTouches) {
+    const MeshStage& m = cube_mesh();
+    ThinFaces thin;
+    add_thin_blocks(m.tets, m.topology, slab_and_rest(m, 0.15), kH, thin);
+    ASSERT_EQ(thin.face_size.size(), 5u);
+    EXPECT_FALSE(thin.face_size.count(face_at(m.tets, 0, 1.0)));
+    for (const auto& [face, size] : thin.face_size) {
+        EXPECT_GE(size, kH / 3 - 1e-12);
+        EXPECT_LT(size, kResolvedThicknessH * kH / 3);
+    }
+    EXPECT_EQ(thin.places, 1);
+    EXPECT_GT(thin.thinnest, 0);
+    EXPECT_LT(thin.thinnest, 0.5 * kResolvedThicknessH * kH);
+    ThinFaces none;
+    add_thin_blocks(m.tets, m.topology, slab_and_rest(m, 0.5), kH, none);
+    EXPECT_TRUE(none.face_size.empty());
+}
+
 // A run holding only what the choice between a first and a finer run reads.
 RunResult scored_run(int curves_3_5, int count, int valid, int pairs, int conforming) {
     RunResult r;
