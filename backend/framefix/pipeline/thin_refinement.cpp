@@ -121,7 +121,7 @@ ThinRefinement thin_round(const RunOptions& o, RunResult& r, long base_tets, con
     if (estimate > cap) {
         t.reason = "the thin blocks need about " + std::to_string(long(estimate / 1000)) + "k tets, more than " +
                    (made_with.empty() ? std::to_string(int(kMaxThinTetFactor)) + " x this mesh's"
-                                      : "this round may add (" + std::to_string(long(cap / 1000)) + "k)") +
+                                      : "one more round may make (" + std::to_string(long(cap / 1000)) + "k)") +
                    "; a smaller --size-factor meshes them finer";
         return t;
     }
